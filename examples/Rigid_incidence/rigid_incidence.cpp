@@ -1,0 +1,208 @@
+// Copyright (c) 2026 Rigid_incidence contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// The command-line tool: rigid_incidence analyze SCENE.json [--json] [--dot FILE] [--kernel K]
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Gmpq.h>
+#include <CGAL/Rigid_incidence.h>
+
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace RI = CGAL::Rigid_incidence;
+
+static const char* usage_text =
+  "rigid_incidence: every real configuration of a scene of rigid bodies sharing points.\n"
+  "\n"
+  "Usage:\n"
+  "  rigid_incidence analyze SCENE.json [--json] [--dot FILE] [--kernel exact|epick|epeck]\n"
+  "  rigid_incidence --help\n"
+  "\n"
+  "Commands:\n"
+  "  analyze   Read a scene (format \"rigid-incidence-scene/1\"), standardize it (merge bodies\n"
+  "            sharing 3 or more points, add implied bodies, absorb what is not proper-maximal),\n"
+  "            count its degrees of freedom, build the overlap graph and the optimal incidence\n"
+  "            tree, and print the number of variables of the reduced system next to the\n"
+  "            6(k-1) of the naive formulation.\n"
+  "\n"
+  "Options:\n"
+  "  --json         print the analysis as JSON on standard output instead of text; keys:\n"
+  "                 scene, bodies, implied_bodies, standardization, dof, overlap_graph,\n"
+  "                 covering_set, non_covering, incidence_tree {root, edges [[parent, child,\n"
+  "                 weight]], weight, depth_sum, proven_optimal, strategy}, optimal_trees_tied,\n"
+  "                 reduced_variables, naive_variables\n"
+  "  --dot FILE     write the overlap graph in Graphviz DOT to FILE, the tree highlighted\n"
+  "                 (render with: dot -Tsvg FILE -o graph.svg)\n"
+  "  --kernel K     number type of the coordinates: exact (default; CGAL::Simple_cartesian\n"
+  "                 over Gmpq, every check exact), epeck (CGAL's exact-constructions kernel)\n"
+  "                 or epick (doubles: scene numbers are rounded to the nearest double and\n"
+  "                 consistency checks use a relative tolerance of 1e-9)\n"
+  "  --help, -h     print this help\n"
+  "\n"
+  "Exit status: 0 on success, 1 on a usage error, 2 when the scene is malformed (the message\n"
+  "names the file, body, point or field at fault).\n";
+
+struct Options
+{
+  std::string scene, dot, kernel = "exact";
+  bool json = false;
+};
+
+template <class Traits>
+int analyze(const Options& o)
+{
+  RI::Scene scene = RI::read_scene(o.scene);
+  RI::Rigid_body_collection<Traits> input = RI::make_collection<Traits>(scene);
+  std::vector<std::string> log;
+  RI::Rigid_body_collection<Traits> c;
+  try {
+    c = RI::standardize(input, &log);
+  } catch (const RI::Input_error& e) {
+    throw RI::Input_error(o.scene + ": " + e.what());
+  }
+  RI::Dof_count dof = RI::dof_count(c);
+  RI::Incidence_tree t = RI::optimal_incidence_tree(c);
+  RI::Overlap_graph og(c);
+  const long naive = 6 * (long(t.covering_set.size()) - 1);
+  auto name = [&](std::size_t b) { return c.body(b).name; };
+  auto labels = [&](const std::vector<std::size_t>& pts) {
+    std::vector<std::string> l;
+    for (std::size_t p : pts) l.push_back(c.label(p));
+    return l;
+  };
+
+  if (!o.dot.empty()) {
+    std::ofstream dot(o.dot);
+    if (!dot) { std::cerr << "rigid_incidence: cannot write " << o.dot << "\n"; return 1; }
+    RI::write_overlap_graph_dot(dot, c, t);
+  }
+
+  if (o.json) {
+    nlohmann::ordered_json j;
+    j["scene"] = {{"name", scene.name}, {"file", o.scene}, {"kernel", o.kernel}, {"frame", c.frame()},
+                  {"user_bodies", scene.bodies.size()}, {"user_distances", scene.distances.size()}};
+    nlohmann::ordered_json bodies = nlohmann::ordered_json::array(), implied = nlohmann::ordered_json::array();
+    for (std::size_t i = 0; i < c.number_of_bodies(); ++i) {
+      const auto& b = c.body(i);
+      nlohmann::ordered_json jb = {{"name", b.name}, {"origin", RI::to_string(b.origin)}, {"points", labels(b.points)},
+                                   {"sources", b.sources}, {"mirror_variants", b.mirror_variants}};
+      bodies.push_back(jb);
+      if (b.origin == RI::Body_origin::IMPLIED) implied.push_back(jb);
+    }
+    j["bodies"] = bodies;
+    j["implied_bodies"] = implied;
+    j["standardization"] = log;
+    nlohmann::ordered_json remaining = nlohmann::ordered_json::array();
+    for (const auto& d : c.distances()) remaining.push_back({{"between", {c.label(d.a), c.label(d.b)}}, {"source", d.name}});
+    j["remaining_distances"] = remaining;
+    nlohmann::ordered_json comps = nlohmann::ordered_json::array();
+    for (const auto& comp : dof.components) { std::vector<std::string> n; for (auto b : comp) n.push_back(name(b)); comps.push_back(n); }
+    j["dof"] = {{"bodies", dof.bodies}, {"body_dof", dof.body_dof}, {"rdof", dof.removed}, {"distances", dof.distances},
+                {"dof", dof.dof}, {"verdict", dof.verdict()}, {"connected", dof.connected}, {"components", comps}};
+    nlohmann::ordered_json edges = nlohmann::ordered_json::array();
+    const auto& g = og.graph();
+    for (auto e : boost::make_iterator_range(boost::edges(g)))
+      edges.push_back({name(boost::source(e, g)), name(boost::target(e, g)), g[e].weight});
+    j["overlap_graph"] = {{"edges", edges}, {"omitted_weight", 6}};
+    std::vector<std::string> cover, non;
+    for (auto b : t.covering_set) cover.push_back(name(b));
+    for (auto b : t.non_covering) non.push_back(name(b));
+    j["covering_set"] = cover;
+    j["non_covering"] = non;
+    nlohmann::ordered_json tedges = nlohmann::ordered_json::array();
+    for (const auto& e : t.edges) tedges.push_back({name(e.parent), name(e.child), e.weight});
+    j["incidence_tree"] = {{"root", name(t.root)}, {"edges", tedges}, {"weight", t.weight}, {"depth_sum", t.depth_sum},
+                           {"proven_optimal", t.proven_optimal}, {"strategy", t.strategy}};
+    j["optimal_trees_tied"] = t.ties;
+    j["reduced_variables"] = t.weight;
+    j["naive_variables"] = naive;
+    std::cout << j.dump(2) << "\n";
+    return 0;
+  }
+
+  std::cout << "scene " << (scene.name.empty() ? std::string("(unnamed)") : scene.name) << " (" << o.scene << "), kernel "
+            << o.kernel << ": " << scene.bodies.size() << " bodies, " << scene.distances.size() << " distances\n";
+  std::cout << "\nstandardization:\n";
+  if (log.empty()) std::cout << "  nothing to do: the collection is standard as given\n";
+  for (const auto& l : log) std::cout << "  - " << l << "\n";
+  std::cout << "\nstandard collection: " << c.number_of_bodies() << " bodies, " << c.shared_points().size()
+            << " shared points, " << c.distances().size() << " remaining distances; frame '" << c.frame() << "'\n";
+  for (std::size_t i = 0; i < c.number_of_bodies(); ++i) {
+    const auto& b = c.body(i);
+    std::cout << "  " << b.name << " [" << RI::to_string(b.origin) << "]:";
+    for (auto l : labels(b.points)) std::cout << " " << l;
+    if (b.mirror_variants > 1) std::cout << "  (fixed up to a mirror image: 2 variants)";
+    std::cout << "\n";
+  }
+  for (const auto& d : c.distances())
+    std::cout << "  distance " << c.label(d.a) << "-" << c.label(d.b) << " (" << d.name << ")\n";
+  std::cout << "\ndof count: 6(k-1) = " << dof.body_dof << ", rdof = " << dof.removed << ", distances = " << dof.distances
+            << ", dof = " << dof.dof << ": " << dof.verdict() << " by the count";
+  if (!dof.connected) std::cout << "; NOT CONNECTED: " << dof.components.size() << " separate parts";
+  std::cout << "\n";
+  std::cout << "\noverlap graph (w = 1 shared pair, 3 shared point; pairs sharing nothing have w = 6, omitted):\n";
+  const auto& g = og.graph();
+  for (auto e : boost::make_iterator_range(boost::edges(g))) {
+    std::cout << "  " << name(boost::source(e, g)) << " -- " << name(boost::target(e, g)) << "  w=" << g[e].weight << "  shares";
+    for (auto l : labels(g[e].shared)) std::cout << " " << l;
+    std::cout << "\n";
+  }
+  std::cout << "\ncovering set:";
+  for (auto b : t.covering_set) std::cout << " " << name(b);
+  std::cout << "\nnot in the covering set:";
+  if (t.non_covering.empty()) std::cout << " (none)";
+  for (auto b : t.non_covering) std::cout << " " << name(b);
+  std::cout << "\n\noptimal incidence tree: root " << name(t.root) << ", weight " << t.weight << ", depth sum " << t.depth_sum
+            << (t.proven_optimal ? " (proven optimal)" : " (NOT proven optimal)") << "\n";
+  for (const auto& e : t.edges) {
+    std::cout << "  " << name(e.parent) << " -> " << name(e.child) << "  w=" << e.weight;
+    auto sh = og.shared_points(e.parent, e.child);
+    if (!sh.empty()) { std::cout << "  shares"; for (auto l : labels(sh)) std::cout << " " << l; }
+    std::cout << "\n";
+  }
+  if (t.ties > 1)
+    std::cout << "  " << t.ties << " rooted trees tie on weight and depth sum" << (t.ties_complete ? "" : " (at least)")
+              << "; the tie-break prefers bodies with the user's coordinates, then the order of the bodies\n";
+  std::cout << "  search: " << t.strategy << "\n";
+  std::cout << "\nreduced system: " << t.weight << " variables, against 6(k-1) = " << naive << " for the naive formulation over the "
+            << t.covering_set.size() << " bodies of the covering set\n";
+  return 0;
+}
+
+int main(int argc, char** argv)
+{
+  std::vector<std::string> args(argv + 1, argv + argc);
+  if (args.empty()) { std::cerr << usage_text; return 1; }
+  if (args[0] == "--help" || args[0] == "-h" || args[0] == "help") { std::cout << usage_text; return 0; }
+  if (args[0] != "analyze") { std::cerr << "rigid_incidence: unknown command '" << args[0] << "' (see --help)\n"; return 1; }
+  Options o;
+  for (std::size_t i = 1; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    if (a == "--json") o.json = true;
+    else if (a == "--help" || a == "-h") { std::cout << usage_text; return 0; }
+    else if (a == "--dot" || a == "--kernel") {
+      if (i + 1 >= args.size()) { std::cerr << "rigid_incidence: " << a << " needs a value\n"; return 1; }
+      (a == "--dot" ? o.dot : o.kernel) = args[++i];
+    } else if (!a.empty() && a[0] == '-') { std::cerr << "rigid_incidence: unknown option '" << a << "' (see --help)\n"; return 1; }
+    else if (o.scene.empty()) o.scene = a;
+    else { std::cerr << "rigid_incidence: more than one scene given ('" << a << "')\n"; return 1; }
+  }
+  if (o.scene.empty()) { std::cerr << "rigid_incidence: analyze needs a scene file\n"; return 1; }
+  try {
+    if (o.kernel == "exact") return analyze<RI::Rigid_incidence_traits<CGAL::Simple_cartesian<CGAL::Gmpq>>>(o);
+    if (o.kernel == "epick") return analyze<RI::Rigid_incidence_traits<CGAL::Exact_predicates_inexact_constructions_kernel>>(o);
+    if (o.kernel == "epeck") return analyze<RI::Rigid_incidence_traits<CGAL::Exact_predicates_exact_constructions_kernel>>(o);
+    std::cerr << "rigid_incidence: unknown kernel '" << o.kernel << "' (exact, epick or epeck)\n";
+    return 1;
+  } catch (const RI::Input_error& e) {
+    std::cerr << "rigid_incidence: error: " << e.what() << "\n";
+    return 2;
+  }
+}

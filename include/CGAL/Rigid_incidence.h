@@ -1,0 +1,20 @@
+// Copyright (c) 2026 Rigid_incidence contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Umbrella header of the Rigid_incidence package.
+
+#ifndef CGAL_RIGID_INCIDENCE_H
+#define CGAL_RIGID_INCIDENCE_H
+
+#include <CGAL/Rigid_incidence/Input_error.h>
+#include <CGAL/Rigid_incidence/Rigid_incidence_traits.h>
+#include <CGAL/Rigid_incidence/Rigid_body_collection.h>
+#include <CGAL/Rigid_incidence/standardize.h>
+#include <CGAL/Rigid_incidence/enclose_coordinates.h>
+#include <CGAL/Rigid_incidence/Overlap_graph.h>
+#include <CGAL/Rigid_incidence/rdof.h>
+#include <CGAL/Rigid_incidence/optimal_incidence_tree.h>
+#include <CGAL/Rigid_incidence/IO/read_scene.h>
+#include <CGAL/Rigid_incidence/IO/write_dot.h>
+
+#endif

@@ -1,0 +1,331 @@
+// Copyright (c) 2026 Rigid_incidence contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Reading of "rigid-incidence-scene/1" JSON files through nlohmann-json's SAX interface,
+// which hands over each number's original text, so numbers are read exactly.
+
+#ifndef CGAL_RIGID_INCIDENCE_IO_READ_SCENE_H
+#define CGAL_RIGID_INCIDENCE_IO_READ_SCENE_H
+
+#include <CGAL/Rigid_incidence/IO/Scene.h>
+#include <CGAL/Rigid_incidence/Input_error.h>
+#include <CGAL/Rigid_incidence/Rigid_body_collection.h>
+#include <CGAL/Rigid_incidence/internal/parse_number.h>
+
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+#include <istream>
+#include <iterator>
+#include <memory>
+#include <set>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Rigid_incidence {
+namespace internal {
+
+// A small JSON tree whose numbers keep their source text and whose objects keep their
+// keys in order, duplicates included (so that a duplicate label can be reported).
+struct Json_node
+{
+  enum Kind { NUL, BOOLEAN, NUMBER, STRING, ARRAY, OBJECT } kind = NUL;
+  std::string text; // number text, string value, or "true"/"false"
+  std::vector<std::pair<std::string, Json_node>> members; // OBJECT
+  std::vector<Json_node> elements;                        // ARRAY
+
+  static const char* kind_name(Kind k)
+  {
+    switch (k) {
+      case NUL: return "null"; case BOOLEAN: return "a boolean"; case NUMBER: return "a number";
+      case STRING: return "a string"; case ARRAY: return "an array"; default: return "an object";
+    }
+  }
+};
+
+// Nesting deeper than this is refused: no scene needs it, and it bounds recursion.
+constexpr std::size_t max_json_depth = 32;
+
+class Json_sax_builder
+{
+public:
+  using json = nlohmann::json;
+  Json_node root;
+  std::string error;
+
+  bool null() { return put(Json_node::NUL, ""); }
+  bool boolean(bool b) { return put(Json_node::BOOLEAN, b ? "true" : "false"); }
+  bool number_integer(json::number_integer_t v) { return put(Json_node::NUMBER, std::to_string(v)); }
+  bool number_unsigned(json::number_unsigned_t v) { return put(Json_node::NUMBER, std::to_string(v)); }
+  bool number_float(json::number_float_t, const json::string_t& s) { return put(Json_node::NUMBER, s); }
+  bool string(json::string_t& s) { return put(Json_node::STRING, s); }
+  bool binary(json::binary_t&) { error = "binary values are not allowed"; return false; }
+  bool start_object(std::size_t) { return open(Json_node::OBJECT); }
+  bool key(json::string_t& k) { pending_key_ = k; has_key_ = true; return true; }
+  bool end_object() { stack_.pop_back(); return true; }
+  bool start_array(std::size_t) { return open(Json_node::ARRAY); }
+  bool end_array() { stack_.pop_back(); return true; }
+  bool parse_error(std::size_t position, const std::string&, const nlohmann::detail::exception& ex)
+  {
+    error = "invalid JSON at byte " + std::to_string(position) + ": " + ex.what();
+    return false;
+  }
+
+private:
+  std::vector<Json_node*> stack_;
+  std::string pending_key_;
+  bool has_key_ = false;
+  bool started_ = false;
+
+  Json_node* place()
+  {
+    if (stack_.empty()) {
+      if (started_) { error = "more than one top-level value"; return nullptr; }
+      started_ = true;
+      return &root;
+    }
+    Json_node* parent = stack_.back();
+    if (parent->kind == Json_node::OBJECT) {
+      parent->members.emplace_back(pending_key_, Json_node());
+      has_key_ = false;
+      return &parent->members.back().second;
+    }
+    parent->elements.emplace_back();
+    return &parent->elements.back();
+  }
+  bool put(Json_node::Kind k, const std::string& text)
+  {
+    Json_node* n = place();
+    if (!n) return false;
+    n->kind = k; n->text = text;
+    return true;
+  }
+  bool open(Json_node::Kind k)
+  {
+    if (stack_.size() >= max_json_depth) { error = "JSON nested deeper than " + std::to_string(max_json_depth) + " levels"; return false; }
+    Json_node* n = place();
+    if (!n) return false;
+    n->kind = k;
+    stack_.push_back(n);
+    return true;
+  }
+};
+
+class Scene_interpreter
+{
+public:
+  explicit Scene_interpreter(const std::string& source) : source_(source) {}
+
+  [[noreturn]] void fail(const std::string& where, const std::string& what) const
+  {
+    throw Input_error(source_ + ": " + (where.empty() ? std::string() : where + ": ") + what);
+  }
+
+  const Json_node* member(const Json_node& obj, const std::string& key, const std::string& where) const
+  {
+    const Json_node* found = nullptr;
+    for (const auto& m : obj.members)
+      if (m.first == key) {
+        if (found) fail(where, "duplicate field \"" + key + "\"");
+        found = &m.second;
+      }
+    return found;
+  }
+
+  void expect(const Json_node& n, Json_node::Kind k, const std::string& where) const
+  {
+    if (n.kind != k)
+      fail(where, std::string("expected ") + Json_node::kind_name(k) + ", found " + Json_node::kind_name(n.kind));
+  }
+
+  CGAL::Gmpq number(const Json_node& n, const std::string& where) const
+  {
+    if (n.kind != Json_node::NUMBER && n.kind != Json_node::STRING)
+      fail(where, std::string("expected a number (or a string holding one), found ") + Json_node::kind_name(n.kind));
+    CGAL::Gmpq q;
+    std::string why;
+    if (!parse_exact_number(n.text, q, why))
+      fail(where, "\"" + n.text.substr(0, 40) + (n.text.size() > 40 ? "..." : "") + "\" is not a valid number: " + why);
+    return q;
+  }
+
+  std::string string_field(const Json_node& n, const std::string& where) const
+  {
+    expect(n, Json_node::STRING, where);
+    return n.text;
+  }
+
+  Scene interpret(const Json_node& root) const
+  {
+    Scene scene;
+    scene.source = source_;
+    expect(root, Json_node::OBJECT, "top level");
+    static const std::set<std::string> known = {"format", "name", "bodies", "distances", "frame", "inequalities", "free_distance", "comment"};
+    for (const auto& m : root.members)
+      if (!known.count(m.first)) fail("field \"" + m.first + "\"", "unknown field (known: format, name, bodies, distances, frame)");
+    const Json_node* format = member(root, "format", "top level");
+    if (!format) fail("", "missing field \"format\" (expected \"rigid-incidence-scene/1\")");
+    std::string f = string_field(*format, "field \"format\"");
+    if (f != "rigid-incidence-scene/1") fail("field \"format\"", "unknown format \"" + f + "\" (expected \"rigid-incidence-scene/1\")");
+    if (const Json_node* name = member(root, "name", "top level")) scene.name = string_field(*name, "field \"name\"");
+    const Json_node* bodies = member(root, "bodies", "top level");
+    if (!bodies) fail("", "missing field \"bodies\"");
+    expect(*bodies, Json_node::ARRAY, "field \"bodies\"");
+    if (bodies->elements.empty()) fail("field \"bodies\"", "no bodies");
+    std::set<std::string> body_names;
+    for (std::size_t i = 0; i < bodies->elements.size(); ++i) {
+      const Json_node& b = bodies->elements[i];
+      std::string where = "bodies[" + std::to_string(i) + "]";
+      expect(b, Json_node::OBJECT, where);
+      for (const auto& m : b.members)
+        if (m.first != "name" && m.first != "points") fail(where, "unknown field \"" + m.first + "\" (known: name, points)");
+      Scene::Body body;
+      const Json_node* bn = member(b, "name", where);
+      if (!bn) fail(where, "missing field \"name\"");
+      body.name = string_field(*bn, where + ".name");
+      if (body.name.empty()) fail(where, "empty body name");
+      where = "body '" + body.name + "'";
+      if (!body_names.insert(body.name).second) fail(where, "duplicate body name");
+      const Json_node* pts = member(b, "points", where);
+      if (!pts) fail(where, "missing field \"points\"");
+      expect(*pts, Json_node::OBJECT, where + ": field \"points\"");
+      std::set<std::string> labels;
+      for (const auto& m : pts->members) {
+        std::string pw = where + ": point '" + m.first + "'";
+        if (m.first.empty()) fail(where, "empty point label");
+        if (!labels.insert(m.first).second) fail(pw, "duplicate label inside the body");
+        expect(m.second, Json_node::ARRAY, pw);
+        if (m.second.elements.size() != 3)
+          fail(pw, "expected 3 coordinates, found " + std::to_string(m.second.elements.size()));
+        Scene::Point p;
+        p.label = m.first;
+        p.x = number(m.second.elements[0], pw + ": coordinate x");
+        p.y = number(m.second.elements[1], pw + ": coordinate y");
+        p.z = number(m.second.elements[2], pw + ": coordinate z");
+        body.points.push_back(p);
+      }
+      scene.bodies.push_back(body);
+    }
+    if (const Json_node* ds = member(root, "distances", "top level")) {
+      expect(*ds, Json_node::ARRAY, "field \"distances\"");
+      for (std::size_t i = 0; i < ds->elements.size(); ++i) {
+        const Json_node& d = ds->elements[i];
+        std::string where = "distances[" + std::to_string(i) + "]";
+        expect(d, Json_node::OBJECT, where);
+        for (const auto& m : d.members)
+          if (m.first != "between" && m.first != "squared" && m.first != "length")
+            fail(where, "unknown field \"" + m.first + "\" (known: between, squared, length)");
+        Scene::Distance dist;
+        const Json_node* between = member(d, "between", where);
+        if (!between) fail(where, "missing field \"between\"");
+        expect(*between, Json_node::ARRAY, where + ".between");
+        if (between->elements.size() != 2) fail(where + ".between", "expected 2 point labels");
+        dist.a = string_field(between->elements[0], where + ".between[0]");
+        dist.b = string_field(between->elements[1], where + ".between[1]");
+        where += " ('" + dist.a + "'-'" + dist.b + "')";
+        if (dist.a == dist.b) fail(where, "a distance must join two different points");
+        const Json_node* sq = member(d, "squared", where);
+        const Json_node* len = member(d, "length", where);
+        if (sq && len) fail(where, "give either \"squared\" or \"length\", not both");
+        if (!sq && !len) fail(where, "missing \"squared\" or \"length\"");
+        if (sq) {
+          dist.squared = number(*sq, where + ".squared");
+          if (dist.squared <= 0) fail(where + ".squared", "a distance must be positive");
+        } else {
+          dist.length = number(*len, where + ".length");
+          if (dist.length <= 0) fail(where + ".length", "a distance must be positive");
+          dist.given_as_length = true;
+          dist.squared = dist.length * dist.length;
+        }
+        scene.distances.push_back(dist);
+      }
+    }
+    if (const Json_node* fr = member(root, "frame", "top level")) {
+      scene.frame = string_field(*fr, "field \"frame\"");
+      if (!body_names.count(scene.frame)) fail("field \"frame\"", "names no body: '" + scene.frame + "'");
+    }
+    return scene;
+  }
+
+private:
+  std::string source_;
+};
+
+} // namespace internal
+
+/*!
+\ingroup PkgRigidIncidenceIO
+\brief Reads a scene of format "rigid-incidence-scene/1" from `in`.
+
+Numbers are read from their text (JSON numbers or strings holding an integer, an exact
+decimal such as "-1.25e-3", or a rational "3/7"), never through a binary double.
+`source` names the input in error messages.
+Checks done here are those of the file format (valid JSON, known format and fields,
+numbers, duplicate body names or labels, positive distances, the frame naming a body);
+the geometric checks are made by `Rigid_body_collection`.
+
+\throws Input_error naming the file, body, point or field at fault.
+*/
+inline Scene read_scene(std::istream& in, const std::string& source = "<stream>")
+{
+  internal::Json_sax_builder sax;
+  bool ok = false;
+  try {
+    ok = nlohmann::json::sax_parse(in, &sax);
+  } catch (const std::exception& e) {
+    throw Input_error(source + ": invalid JSON: " + e.what());
+  }
+  if (!ok)
+    throw Input_error(source + ": " + (sax.error.empty() ? std::string("invalid JSON") : sax.error));
+  return internal::Scene_interpreter(source).interpret(sax.root);
+}
+
+/// \ingroup PkgRigidIncidenceIO
+/// Reads a scene from the file `filename`. \throws Input_error also when the file cannot be opened.
+inline Scene read_scene(const std::string& filename)
+{
+  std::ifstream in(filename, std::ios::binary);
+  if (!in) throw Input_error(filename + ": cannot open the file");
+  return read_scene(in, filename);
+}
+
+/*!
+\ingroup PkgRigidIncidenceIO
+\brief Builds a `Rigid_body_collection` from a scene, converting each exact number to
+`Traits::FT` (exactly when `FT` is an exact field, else to the nearest double).
+
+\throws Input_error for geometric faults, named with the scene's source: coincident points
+inside a body, a distance naming an unknown point, two distances on one pair that disagree.
+*/
+template <class Traits>
+Rigid_body_collection<Traits> make_collection(const Scene& scene)
+{
+  Rigid_body_collection<Traits> c;
+  c.name = scene.name;
+  try {
+    for (const auto& b : scene.bodies) {
+      std::vector<std::pair<std::string, typename Traits::Point_3>> pts;
+      for (const auto& p : b.points)
+        pts.emplace_back(p.label, Traits::point(Traits::from_rational(p.x), Traits::from_rational(p.y),
+                                                Traits::from_rational(p.z)));
+      c.add_body(b.name, pts);
+    }
+    for (std::size_t i = 0; i < scene.distances.size(); ++i) {
+      const auto& d = scene.distances[i];
+      c.add_distance(d.a, d.b, Traits::from_rational(d.squared),
+                     "distances[" + std::to_string(i) + "] ('" + d.a + "'-'" + d.b + "')");
+    }
+    if (!scene.frame.empty()) c.set_frame(scene.frame);
+  } catch (const Input_error& e) {
+    throw Input_error(scene.source + ": " + e.what());
+  }
+  return c;
+}
+
+} // namespace Rigid_incidence
+} // namespace CGAL
+
+#endif

@@ -1,0 +1,76 @@
+// Copyright (c) 2026 Rigid_incidence contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Graphviz DOT output of the overlap graph with an incidence tree highlighted.
+
+#ifndef CGAL_RIGID_INCIDENCE_IO_WRITE_DOT_H
+#define CGAL_RIGID_INCIDENCE_IO_WRITE_DOT_H
+
+#include <CGAL/Rigid_incidence/Overlap_graph.h>
+#include <CGAL/Rigid_incidence/Rigid_body_collection.h>
+#include <CGAL/Rigid_incidence/optimal_incidence_tree.h>
+
+#include <ostream>
+#include <string>
+
+namespace CGAL {
+namespace Rigid_incidence {
+namespace internal {
+inline std::string dot_quote(const std::string& s)
+{
+  std::string r = "\"";
+  for (char ch : s) { if (ch == '"' || ch == '\\') r += '\\'; r += ch; }
+  return r + "\"";
+}
+} // namespace internal
+
+/*!
+\ingroup PkgRigidIncidenceIO
+\brief Writes the overlap graph of `c` in Graphviz DOT, with the tree `t` highlighted.
+
+Bodies of the covering set are filled, the root is double-circled, implied bodies are
+drawn as boxes, tree edges are bold and labelled with their weight, edges of weight 6
+(bodies sharing no point) are omitted.
+*/
+template <class Traits>
+void write_overlap_graph_dot(std::ostream& os, const Rigid_body_collection<Traits>& c, const Incidence_tree& t)
+{
+  using internal::dot_quote;
+  Overlap_graph og(c);
+  std::vector<bool> in_cover(c.number_of_bodies(), false);
+  for (std::size_t b : t.covering_set) in_cover[b] = true;
+  os << "graph overlap {\n";
+  os << "  label=" << dot_quote("overlap graph of " + (c.name.empty() ? std::string("scene") : c.name) +
+                                  ": tree weight " + std::to_string(t.weight) + ", depth sum " + std::to_string(t.depth_sum) +
+                                  " (bold: incidence tree; weight-6 pairs omitted)") << ";\n";
+  os << "  node [fontname=Helvetica]; edge [fontname=Helvetica];\n";
+  for (std::size_t i = 0; i < c.number_of_bodies(); ++i) {
+    const auto& b = c.body(i);
+    std::string pts;
+    for (std::size_t k = 0; k < b.points.size() && k < 6; ++k) pts += (k ? "," : "") + c.label(b.points[k]);
+    if (b.points.size() > 6) pts += ",...";
+    os << "  b" << i << " [label=" << dot_quote(b.name + "\\n" + pts)
+       << ", shape=" << (b.origin == Body_origin::IMPLIED ? "box" : "ellipse")
+       << (i == t.root ? ", peripheries=2" : "")
+       << (in_cover[i] ? ", style=filled, fillcolor=\"#cfe3ff\"" : ", style=dashed, color=gray40") << "];\n";
+  }
+  const auto& g = og.graph();
+  for (auto e : boost::make_iterator_range(boost::edges(g))) {
+    std::size_t a = boost::source(e, g), b = boost::target(e, g);
+    bool tree = (t.parent.size() > b && t.parent[b] == a) || (t.parent.size() > a && t.parent[a] == b);
+    std::string shared;
+    for (std::size_t p : g[e].shared) shared += (shared.empty() ? "" : ",") + c.label(p);
+    os << "  b" << a << " -- b" << b << " [label=" << dot_quote(std::to_string(g[e].weight) + " (" + shared + ")")
+       << (tree ? ", penwidth=3, color=\"#c0392b\"" : ", color=gray50") << "];\n";
+  }
+  // tree edges of weight 6 are not in the overlap graph's explicit edges
+  for (const auto& te : t.edges)
+    if (te.weight == 6)
+      os << "  b" << te.parent << " -- b" << te.child << " [label=\"6\", penwidth=3, color=\"#c0392b\"];\n";
+  os << "}\n";
+}
+
+} // namespace Rigid_incidence
+} // namespace CGAL
+
+#endif

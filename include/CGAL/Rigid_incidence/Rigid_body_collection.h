@@ -1,0 +1,248 @@
+// Copyright (c) 2026 Rigid_incidence contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Rigid bodies (labelled points in local coordinates) and fixed distances between points:
+// the input of the package, validated against Definition 1 of the papers.
+
+#ifndef CGAL_RIGID_INCIDENCE_RIGID_BODY_COLLECTION_H
+#define CGAL_RIGID_INCIDENCE_RIGID_BODY_COLLECTION_H
+
+#include <CGAL/Rigid_incidence/Input_error.h>
+#include <CGAL/Rigid_incidence/Rigid_incidence_traits.h>
+
+#include <algorithm>
+#include <cstddef>
+#include <map>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Rigid_incidence {
+
+/// \ingroup PkgRigidIncidenceRef
+/// Where a body of a collection comes from.
+enum class Body_origin
+{
+  USER,    ///< given by the user, with local coordinates
+  MERGED,  ///< union of bodies sharing 3 or more non-collinear points (standardize)
+  IMPLIED  ///< a maximal set of points all at fixed distances, not in one body (standardize)
+};
+
+inline const char* to_string(Body_origin o)
+{
+  switch (o) { case Body_origin::USER: return "user"; case Body_origin::MERGED: return "merged"; default: return "implied"; }
+}
+
+/*!
+\ingroup PkgRigidIncidenceRef
+\brief A collection of rigid bodies sharing labelled points, plus fixed distances.
+
+Points with the same label in different bodies are one physical point (an incidence).
+Every body has at least 2 points. A body given by the user carries exact local coordinates;
+a body built by `standardize()` from distances (an implied body) carries the squared
+distances between its points instead, from which `enclose_coordinates()` places it.
+
+Validation happens as the collection is built: every member function that adds
+something throws `Input_error` naming the body, point or distance at fault, and leaves
+the collection unchanged.
+
+\tparam Traits a model of `RigidIncidenceTraits`.
+*/
+template <class Traits>
+class Rigid_body_collection
+{
+public:
+  typedef Traits Traits_type;
+  typedef typename Traits::FT FT;
+  typedef typename Traits::Point_3 Point_3;
+
+  /// A squared distance between two points, given by their indices (into `points` of a body,
+  /// or global point indices for the collection's distances).
+  struct Squared_distance { std::size_t a, b; FT squared; };
+
+  struct Body
+  {
+    std::string name;
+    std::vector<std::size_t> points;        ///< global point indices, sorted
+    std::vector<bool> has_coordinates;      ///< per point: exact local coordinates known
+    std::vector<Point_3> coordinates;       ///< per point, valid where `has_coordinates`
+    std::vector<Squared_distance> squared_distances; ///< local indices; pairs not both with coordinates
+    Body_origin origin = Body_origin::USER;
+    std::vector<std::string> sources;       ///< user bodies and distances this body stands for
+    int mirror_variants = 1;                ///< 2 if its distances fix it only up to a mirror image
+
+    /// Local index of global point `p`, or `npos`.
+    std::size_t local(std::size_t p) const
+    {
+      auto it = std::lower_bound(points.begin(), points.end(), p);
+      return (it != points.end() && *it == p) ? std::size_t(it - points.begin()) : npos;
+    }
+    bool contains(std::size_t p) const { return local(p) != npos; }
+    bool all_coordinates() const
+    { return std::all_of(has_coordinates.begin(), has_coordinates.end(), [](bool b) { return b; }); }
+    /// The squared distance between the local points `i` and `j`, when the body knows it exactly.
+    std::optional<FT> squared(std::size_t i, std::size_t j) const
+    {
+      if (i == j) return FT(0);
+      if (has_coordinates[i] && has_coordinates[j]) return Traits::squared_distance(coordinates[i], coordinates[j]);
+      for (const auto& d : squared_distances)
+        if ((d.a == i && d.b == j) || (d.a == j && d.b == i)) return d.squared;
+      return std::nullopt;
+    }
+  };
+
+  struct Distance
+  {
+    std::size_t a, b;   ///< global point indices
+    FT squared;
+    std::string name;   ///< for messages, e.g. "distance G1-D2"
+  };
+
+  static constexpr std::size_t npos = std::size_t(-1);
+
+  // ---------------------------------------------------------------- points
+  std::size_t number_of_points() const { return labels_.size(); }
+  const std::string& label(std::size_t p) const { return labels_[p]; }
+  /// The index of the point labelled `l`, or `npos`.
+  std::size_t point_index(const std::string& l) const
+  {
+    auto it = index_.find(l);
+    return it == index_.end() ? npos : it->second;
+  }
+
+  // ---------------------------------------------------------------- bodies
+  std::size_t number_of_bodies() const { return bodies_.size(); }
+  const Body& body(std::size_t i) const { return bodies_[i]; }
+  const std::vector<Body>& bodies() const { return bodies_; }
+  std::size_t body_index(const std::string& name) const
+  {
+    for (std::size_t i = 0; i < bodies_.size(); ++i) if (bodies_[i].name == name) return i;
+    return npos;
+  }
+
+  /*!
+    Adds a body with local coordinates. Throws `Input_error` if the name is empty or taken,
+    if it has fewer than 2 points, a label twice, or two coincident points.
+    Returns the body's index.
+  */
+  std::size_t add_body(const std::string& name, const std::vector<std::pair<std::string, Point_3>>& pts)
+  {
+    const std::string where = "body '" + name + "'";
+    if (name.empty()) throw Input_error("a body has an empty name");
+    if (body_index(name) != npos) throw Input_error(where + ": duplicate body name");
+    if (pts.size() < 2)
+      throw Input_error(where + ": a body needs at least 2 points, it has " + std::to_string(pts.size()));
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+      if (pts[i].first.empty()) throw Input_error(where + ": empty point label");
+      for (std::size_t j = 0; j < i; ++j) {
+        if (pts[i].first == pts[j].first)
+          throw Input_error(where + ": point '" + pts[i].first + "': duplicate label inside the body");
+        if (Traits::equal(pts[i].second, pts[j].second))
+          throw Input_error(where + ": points '" + pts[j].first + "' and '" + pts[i].first + "' coincide");
+      }
+    }
+    std::vector<std::pair<std::size_t, Point_3>> ids;
+    for (const auto& p : pts) ids.emplace_back(intern(p.first), p.second);
+    std::sort(ids.begin(), ids.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    Body b;
+    b.name = name;
+    for (const auto& p : ids) { b.points.push_back(p.first); b.coordinates.push_back(p.second); }
+    b.has_coordinates.assign(ids.size(), true);
+    b.origin = Body_origin::USER;
+    b.sources.push_back(name);
+    bodies_.push_back(std::move(b));
+    return bodies_.size() - 1;
+  }
+
+  /*!
+    Adds a fixed squared distance between the points labelled `a` and `b`. Throws
+    `Input_error` if a label names no point of any body, if the value is not positive, or if
+    another distance on the same pair disagrees (an equal one is accepted once).
+  */
+  void add_distance(const std::string& a, const std::string& b, const FT& squared, const std::string& name = "")
+  {
+    const std::string where = name.empty() ? "distance '" + a + "'-'" + b + "'" : name;
+    std::size_t pa = point_index(a), pb = point_index(b);
+    if (pa == npos) throw Input_error(where + ": names unknown point '" + a + "'");
+    if (pb == npos) throw Input_error(where + ": names unknown point '" + b + "'");
+    if (pa == pb) throw Input_error(where + ": joins a point to itself");
+    if (!(squared > FT(0))) throw Input_error(where + ": a distance must be positive");
+    for (const Distance& d : distances_)
+      if ((d.a == pa && d.b == pb) || (d.a == pb && d.b == pa)) {
+        if (same_value(d.squared, squared)) return;
+        throw Input_error(where + ": disagrees with " + d.name + " on the same pair of points");
+      }
+    distances_.push_back(Distance{pa, pb, squared, where});
+  }
+
+  const std::vector<Distance>& distances() const { return distances_; }
+
+  /// Names the body in whose local frame results are reported (default: the first body).
+  void set_frame(const std::string& body_name)
+  {
+    if (body_index(body_name) == npos) throw Input_error("frame: names no body: '" + body_name + "'");
+    frame_ = body_name;
+  }
+  std::string frame() const { return frame_.empty() && !bodies_.empty() ? bodies_.front().name : frame_; }
+
+  std::string name;  ///< the scene's name, for reports
+
+  /// Compares two values exactly when `FT` is exact, else with a relative tolerance
+  /// (`consistency_tolerance`, default 1e-9): an inexact kernel rounds scene coordinates.
+  bool same_value(const FT& x, const FT& y) const
+  {
+    if constexpr (Traits::has_exact_ft) return x == y;
+    else {
+      double a = CGAL::to_double(x), b = CGAL::to_double(y);
+      double scale = (std::max)({1.0, std::abs(a), std::abs(b)});
+      return std::abs(a - b) <= consistency_tolerance * scale;
+    }
+  }
+  double consistency_tolerance = 1e-9;
+
+  /// The points shared by two or more bodies (the set X of the papers).
+  std::vector<std::size_t> shared_points() const
+  {
+    std::vector<int> count(labels_.size(), 0);
+    for (const Body& b : bodies_) for (std::size_t p : b.points) ++count[p];
+    std::vector<std::size_t> x;
+    for (std::size_t p = 0; p < count.size(); ++p) if (count[p] >= 2) x.push_back(p);
+    return x;
+  }
+
+  /// The points common to bodies `i` and `j` (global indices, sorted).
+  std::vector<std::size_t> common_points(std::size_t i, std::size_t j) const
+  {
+    std::vector<std::size_t> c;
+    std::set_intersection(bodies_[i].points.begin(), bodies_[i].points.end(),
+                          bodies_[j].points.begin(), bodies_[j].points.end(), std::back_inserter(c));
+    return c;
+  }
+
+  // -------------------------------------------- low-level access used by standardize()
+  std::vector<Body>& mutable_bodies() { return bodies_; }
+  std::vector<Distance>& mutable_distances() { return distances_; }
+
+private:
+  std::size_t intern(const std::string& l)
+  {
+    auto it = index_.find(l);
+    if (it != index_.end()) return it->second;
+    labels_.push_back(l);
+    index_[l] = labels_.size() - 1;
+    return labels_.size() - 1;
+  }
+
+  std::vector<std::string> labels_;
+  std::map<std::string, std::size_t> index_;
+  std::vector<Body> bodies_;
+  std::vector<Distance> distances_;
+  std::string frame_;
+};
+
+} // namespace Rigid_incidence
+} // namespace CGAL
+
+#endif

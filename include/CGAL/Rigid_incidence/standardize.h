@@ -1,0 +1,487 @@
+// Copyright (c) 2026 Rigid_incidence contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Standardization of a collection (optimized_incidence_tree_parametrization.txt, Section 3,
+// Definitions 1-3; well_formed_optimal_incidences.txt, Definition 1): merge bodies sharing
+// three or more non-collinear points, add implied rigid bodies (maximal cliques of fixed
+// distances), absorb bodies and distances that are not proper-maximal.
+
+#ifndef CGAL_RIGID_INCIDENCE_STANDARDIZE_H
+#define CGAL_RIGID_INCIDENCE_STANDARDIZE_H
+
+#include <CGAL/Rigid_incidence/Rigid_body_collection.h>
+#include <CGAL/Rigid_incidence/internal/cayley_menger.h>
+
+#include <boost/graph/adjacency_list.hpp>
+#include <boost/graph/bron_kerbosch_all_cliques.hpp>
+
+#include <algorithm>
+#include <array>
+#include <deque>
+#include <optional>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Rigid_incidence {
+namespace internal {
+
+template <class Collection>
+std::string labels_of(const Collection& c, const std::vector<std::size_t>& pts, const char* sep = ", ")
+{
+  std::string s;
+  for (std::size_t i = 0; i < pts.size(); ++i) s += (i ? sep : "") + ("'" + c.label(pts[i]) + "'");
+  return s;
+}
+
+// The squared distance between global points p and q as the body knows it (nullopt if unknown).
+template <class Body>
+auto body_squared(const Body& b, std::size_t p, std::size_t q)
+{
+  return b.squared(b.local(p), b.local(q));
+}
+
+// Bron-Kerbosch visitor: records each maximal clique as sorted global point indices.
+struct Clique_collector
+{
+  std::vector<std::vector<std::size_t>>* out;
+  const std::vector<std::size_t>* ids;
+  template <class Clique, class G> void clique(const Clique& c, const G&)
+  {
+    std::vector<std::size_t> k;
+    for (auto v : c) k.push_back((*ids)[v]);
+    std::sort(k.begin(), k.end());
+    out->push_back(k);
+  }
+};
+
+template <class Traits>
+class Standardizer
+{
+  typedef Rigid_body_collection<Traits> Collection;
+  typedef typename Collection::Body Body;
+  typedef typename Collection::Distance Distance;
+  typedef typename Collection::Squared_distance Squared_distance;
+  typedef typename Traits::FT FT;
+  typedef typename Traits::Point_3 Point_3;
+  typedef typename Traits::Vector_3 Vector_3;
+
+public:
+  Standardizer(const Collection& in, std::vector<std::string>* log) : c_(in), log_(log) {}
+
+  Collection run()
+  {
+    turn_collinear_bodies_into_bars();
+    std::size_t guard = 0, limit = 8 * (c_.number_of_bodies() + c_.distances().size()) + 16;
+    bool changed = true;
+    while (changed) {
+      if (++guard > limit) throw Input_error("standardize: no fixpoint reached (internal error)");
+      changed = absorb_distances();
+      changed = absorb_bodies() || changed;
+      if (changed) continue;
+      changed = merge_one_pair();
+      if (changed) continue;
+      changed = add_implied_bodies();
+    }
+    return c_;
+  }
+
+private:
+  Collection c_;
+  std::vector<std::string>* log_;
+  std::size_t implied_count_ = 0, merged_count_ = 0;
+
+  void note(const std::string& s) { if (log_) log_->push_back(s); }
+
+  // A body whose points are all collinear is a bar: it fixes only its pairwise distances
+  // (5 dof, not 6), so it enters as distances.
+  void turn_collinear_bodies_into_bars()
+  {
+    auto& bodies = c_.mutable_bodies();
+    std::vector<Body> kept;
+    std::vector<Body> bars;
+    for (const Body& b : bodies) {
+      bool collinear = true;
+      for (std::size_t i = 2; i < b.points.size() && collinear; ++i)
+        collinear = Traits::collinear(b.coordinates[0], b.coordinates[1], b.coordinates[i]);
+      if (collinear) bars.push_back(b); else kept.push_back(b);
+    }
+    bodies = kept;
+    for (const Body& b : bars) {
+      note("body '" + b.name + "' has all its points on one line: it is a bar and enters as distances");
+      for (std::size_t i = 0; i < b.points.size(); ++i)
+        for (std::size_t j = i + 1; j < b.points.size(); ++j)
+          c_.add_distance(c_.label(b.points[i]), c_.label(b.points[j]),
+                          Traits::squared_distance(b.coordinates[i], b.coordinates[j]),
+                          "body '" + b.name + "' (a bar)");
+    }
+  }
+
+  bool absorb_distances()
+  {
+    auto& ds = c_.mutable_distances();
+    auto& bodies = c_.mutable_bodies();
+    bool changed = false;
+    for (std::size_t k = 0; k < ds.size();) {
+      const Distance& d = ds[k];
+      std::size_t host = Collection::npos;
+      for (std::size_t i = 0; i < bodies.size(); ++i)
+        if (bodies[i].contains(d.a) && bodies[i].contains(d.b)) {
+          auto known = body_squared(bodies[i], d.a, d.b);
+          if (known) {
+            if (!c_.same_value(*known, d.squared))
+              throw Input_error(d.name + ": disagrees with body '" + bodies[i].name +
+                                "', which fixes the distance of '" + c_.label(d.a) + "' and '" + c_.label(d.b) +
+                                "' to squared " + to_text(*known) + ", not " + to_text(d.squared));
+            if (host == Collection::npos) host = i;
+          }
+        }
+      if (host == Collection::npos) { ++k; continue; }
+      note(d.name + " lies inside body '" + bodies[host].name + "' and is absorbed");
+      bodies[host].sources.push_back(d.name);
+      ds.erase(ds.begin() + k);
+      changed = true;
+    }
+    return changed;
+  }
+
+  static std::string to_text(const FT& x)
+  {
+    std::ostringstream os; os.precision(17); os << x; return os.str();
+  }
+
+  bool absorb_bodies()
+  {
+    auto& bodies = c_.mutable_bodies();
+    for (std::size_t i = 0; i < bodies.size(); ++i)
+      for (std::size_t j = 0; j < bodies.size(); ++j) {
+        if (i == j) continue;
+        const Body& small = bodies[i];
+        const Body& big = bodies[j];
+        if (!std::includes(big.points.begin(), big.points.end(), small.points.begin(), small.points.end())) continue;
+        if (small.points.size() == big.points.size() && i < j) continue; // absorb the later of two equal sets
+        check_agreement(small, big, small.points);
+        note("body '" + small.name + "' lies inside body '" + big.name + "' and is absorbed");
+        Body& host = bodies[j];
+        for (const auto& s : small.sources) host.sources.push_back(s);
+        host.mirror_variants = std::max(host.mirror_variants, host.all_coordinates() ? 1 : small.mirror_variants);
+        bodies.erase(bodies.begin() + i);
+        return true;
+      }
+    return false;
+  }
+
+  // Every pairwise distance both bodies know among `pts` must agree.
+  void check_agreement(const Body& a, const Body& b, const std::vector<std::size_t>& pts) const
+  {
+    for (std::size_t u = 0; u < pts.size(); ++u)
+      for (std::size_t v = u + 1; v < pts.size(); ++v) {
+        auto da = body_squared(a, pts[u], pts[v]);
+        auto db = body_squared(b, pts[u], pts[v]);
+        if (da && db && !c_.same_value(*da, *db))
+          throw Input_error("bodies '" + a.name + "' and '" + b.name + "' disagree on the distance of their shared points '" +
+                            c_.label(pts[u]) + "' and '" + c_.label(pts[v]) + "' (squared " + to_text(*da) + " vs " +
+                            to_text(*db) + ")");
+      }
+  }
+
+  // Squared distances among `pts` as known by body a or b (all must be known).
+  std::vector<std::vector<FT>> distance_matrix(const Body& a, const Body* b, const std::vector<std::size_t>& pts) const
+  {
+    std::vector<std::vector<FT>> m(pts.size(), std::vector<FT>(pts.size(), FT(0)));
+    for (std::size_t u = 0; u < pts.size(); ++u)
+      for (std::size_t v = u + 1; v < pts.size(); ++v) {
+        auto d = body_squared(a, pts[u], pts[v]);
+        if (!d && b) d = body_squared(*b, pts[u], pts[v]);
+        if (!d) throw Input_error("standardize: the distance of '" + c_.label(pts[u]) + "' and '" + c_.label(pts[v]) +
+                                  "' is needed but not known exactly (a placement through two implied bodies); not supported yet");
+        m[u][v] = m[v][u] = *d;
+      }
+    return m;
+  }
+
+  bool merge_one_pair()
+  {
+    auto& bodies = c_.mutable_bodies();
+    for (std::size_t i = 0; i < bodies.size(); ++i)
+      for (std::size_t j = i + 1; j < bodies.size(); ++j) {
+        std::vector<std::size_t> common = c_.common_points(i, j);
+        if (common.size() < 3) continue;
+        check_agreement(bodies[i], bodies[j], common);
+        auto dm = distance_matrix(bodies[i], &bodies[j], common);
+        std::optional<std::array<std::size_t, 3>> base = non_collinear_triple(dm);
+        if (!base)
+          throw Input_error("bodies '" + bodies[i].name + "' and '" + bodies[j].name + "' share " + std::to_string(common.size()) +
+                            " collinear points (" + labels_of(c_, common) +
+                            "): they share only an axis, which must be given by exactly 2 shared points");
+        Body merged = merge(bodies[i], bodies[j], common, *base, dm);
+        note("bodies '" + bodies[i].name + "' and '" + bodies[j].name + "' share " + std::to_string(common.size()) +
+             " non-collinear points (" + labels_of(c_, common) + ") and are merged into '" + merged.name + "'");
+        bodies.erase(bodies.begin() + j);
+        bodies[i] = merged;
+        return true;
+      }
+    return false;
+  }
+
+  static std::optional<std::array<std::size_t, 3>> non_collinear_triple(const std::vector<std::vector<FT>>& dm)
+  {
+    std::size_t n = dm.size();
+    for (std::size_t a = 0; a < n; ++a)
+      for (std::size_t b = a + 1; b < n; ++b)
+        for (std::size_t c = b + 1; c < n; ++c)
+          if (CGAL::sign(triangle_16_area_squared(dm[a][b], dm[a][c], dm[b][c])) != CGAL::ZERO)
+            return std::array<std::size_t, 3>{a, b, c};
+    return std::nullopt;
+  }
+
+  // Does the matrix have 4 points spanning 3D?
+  static bool spans_space(const std::vector<std::vector<FT>>& dm)
+  {
+    std::size_t n = dm.size();
+    for (std::size_t a = 0; a < n; ++a) for (std::size_t b = a + 1; b < n; ++b)
+      for (std::size_t c = b + 1; c < n; ++c) for (std::size_t d = c + 1; d < n; ++d)
+        if (CGAL::sign(tetrahedron_288_volume_squared(dm[a][b], dm[a][c], dm[a][d], dm[b][c], dm[b][d], dm[c][d])) != CGAL::ZERO)
+          return true;
+    return false;
+  }
+
+  Body merge(const Body& A, const Body& B, const std::vector<std::size_t>& common,
+             const std::array<std::size_t, 3>& base, const std::vector<std::vector<FT>>& dm)
+  {
+    Body m;
+    m.name = "merged" + std::to_string(++merged_count_) + "(" + A.name + "+" + B.name + ")";
+    m.origin = Body_origin::MERGED;
+    m.sources = A.sources;
+    m.sources.insert(m.sources.end(), B.sources.begin(), B.sources.end());
+    std::set_union(A.points.begin(), A.points.end(), B.points.begin(), B.points.end(), std::back_inserter(m.points));
+    m.has_coordinates.assign(m.points.size(), false);
+    m.coordinates.assign(m.points.size(), Point_3(0, 0, 0));
+    if (A.all_coordinates() && B.all_coordinates()) {
+      // Both bodies have coordinates: B's frame maps to A's by the rotation taking the
+      // frame (u, v, u x v) of three shared points in B to the same frame in A. It is
+      // rational: no square root, exact with an exact kernel.
+      std::size_t pa = common[base[0]], pb = common[base[1]], pc = common[base[2]];
+      const Point_3 a1 = A.coordinates[A.local(pa)], b1 = A.coordinates[A.local(pb)], c1 = A.coordinates[A.local(pc)];
+      const Point_3 a2 = B.coordinates[B.local(pa)], b2 = B.coordinates[B.local(pb)], c2 = B.coordinates[B.local(pc)];
+      Vector_3 u1 = Traits::vector(a1, b1), v1 = Traits::vector(a1, c1), w1 = Traits::cross_product(u1, v1);
+      Vector_3 u2 = Traits::vector(a2, b2), v2 = Traits::vector(a2, c2), w2 = Traits::cross_product(u2, v2);
+      // M = [u1 v1 w1] * [u2 v2 w2]^{-1}
+      FT S[3][3] = {{u2.x(), v2.x(), w2.x()}, {u2.y(), v2.y(), w2.y()}, {u2.z(), v2.z(), w2.z()}};
+      FT T[3][3] = {{u1.x(), v1.x(), w1.x()}, {u1.y(), v1.y(), w1.y()}, {u1.z(), v1.z(), w1.z()}};
+      FT inv[3][3];
+      FT det = S[0][0] * (S[1][1] * S[2][2] - S[1][2] * S[2][1]) - S[0][1] * (S[1][0] * S[2][2] - S[1][2] * S[2][0]) +
+               S[0][2] * (S[1][0] * S[2][1] - S[1][1] * S[2][0]);
+      inv[0][0] = (S[1][1] * S[2][2] - S[1][2] * S[2][1]) / det; inv[0][1] = (S[0][2] * S[2][1] - S[0][1] * S[2][2]) / det;
+      inv[0][2] = (S[0][1] * S[1][2] - S[0][2] * S[1][1]) / det; inv[1][0] = (S[1][2] * S[2][0] - S[1][0] * S[2][2]) / det;
+      inv[1][1] = (S[0][0] * S[2][2] - S[0][2] * S[2][0]) / det; inv[1][2] = (S[0][2] * S[1][0] - S[0][0] * S[1][2]) / det;
+      inv[2][0] = (S[1][0] * S[2][1] - S[1][1] * S[2][0]) / det; inv[2][1] = (S[0][1] * S[2][0] - S[0][0] * S[2][1]) / det;
+      inv[2][2] = (S[0][0] * S[1][1] - S[0][1] * S[1][0]) / det;
+      FT M[3][3];
+      for (int r = 0; r < 3; ++r) for (int s = 0; s < 3; ++s) {
+        M[r][s] = FT(0);
+        for (int k = 0; k < 3; ++k) M[r][s] += T[r][k] * inv[k][s];
+      }
+      auto map_point = [&](const Point_3& p) {
+        FT d[3] = {p.x() - a2.x(), p.y() - a2.y(), p.z() - a2.z()};
+        FT o[3];
+        for (int r = 0; r < 3; ++r) o[r] = M[r][0] * d[0] + M[r][1] * d[1] + M[r][2] * d[2];
+        return Traits::point(a1.x() + o[0], a1.y() + o[1], a1.z() + o[2]);
+      };
+      for (std::size_t k = 0; k < m.points.size(); ++k) {
+        std::size_t p = m.points[k];
+        if (A.contains(p)) { m.coordinates[k] = A.coordinates[A.local(p)]; }
+        else m.coordinates[k] = map_point(B.coordinates[B.local(p)]);
+        m.has_coordinates[k] = true;
+      }
+      for (std::size_t p : common) {
+        Point_3 mapped = map_point(B.coordinates[B.local(p)]);
+        const Point_3& given = A.coordinates[A.local(p)];
+        FT d2 = Traits::squared_distance(mapped, given);
+        if (!c_.same_value(d2 + FT(1), FT(1)))
+          throw Input_error("bodies '" + A.name + "' and '" + B.name + "' share points " + labels_of(c_, common) +
+                            " whose pairwise distances agree but which no rotation superposes (point '" +
+                            c_.label(p) + "'): one body holds the mirror image of the other");
+      }
+      return m;
+    }
+    // At least one of them is known by distances only: keep the coordinates of one body that
+    // has them all, and carry every pairwise distance the two bodies know.
+    const Body* with = A.all_coordinates() ? &A : (B.all_coordinates() ? &B : nullptr);
+    const Body* other = (with == &A) ? &B : &A;
+    for (std::size_t k = 0; k < m.points.size(); ++k)
+      if (with && with->contains(m.points[k])) {
+        m.has_coordinates[k] = true;
+        m.coordinates[k] = with->coordinates[with->local(m.points[k])];
+      }
+    for (const Body* b : {&A, &B})
+      for (std::size_t u = 0; u < b->points.size(); ++u)
+        for (std::size_t v = u + 1; v < b->points.size(); ++v) {
+          std::size_t mu = m.local(b->points[u]), mv = m.local(b->points[v]);
+          if (m.has_coordinates[mu] && m.has_coordinates[mv]) continue;
+          auto d = b->squared(u, v);
+          if (!d) continue;
+          bool dup = false;
+          for (const auto& s : m.squared_distances)
+            if ((s.a == mu && s.b == mv) || (s.a == mv && s.b == mu)) dup = true;
+          if (!dup) m.squared_distances.push_back(Squared_distance{mu, mv, *d});
+        }
+    // Placed from three or more coplanar points, the other body's points have two mirror
+    // placements; from four points spanning space they have one.
+    bool other_has_more = other->points.size() > common.size();
+    int mv = (with && (spans_space(dm) || !other_has_more)) ? 1 : 2;
+    if (!with) mv = std::max(A.mirror_variants, B.mirror_variants);
+    m.mirror_variants = std::max(mv, with ? with->mirror_variants : 1);
+    (void)base;
+    return m;
+  }
+
+  // Implied rigid bodies: maximal sets of >= 3 points with every pair at a fixed distance
+  // (in a common body or joined by a distance), not all in one body.
+  bool add_implied_bodies()
+  {
+    auto& bodies = c_.mutable_bodies();
+    auto& ds = c_.mutable_distances();
+    // Only points that are shared or end a distance can lie in such a set: a point seen by
+    // one body alone is adjacent to that body's points only.
+    std::vector<int> count(c_.number_of_points(), 0);
+    for (const Body& b : bodies) for (std::size_t p : b.points) ++count[p];
+    std::vector<bool> relevant(c_.number_of_points(), false);
+    for (std::size_t p = 0; p < count.size(); ++p) relevant[p] = count[p] >= 2;
+    for (const Distance& d : ds) relevant[d.a] = relevant[d.b] = true;
+    std::vector<std::size_t> ids, vertex_of(c_.number_of_points(), Collection::npos);
+    for (std::size_t p = 0; p < relevant.size(); ++p) if (relevant[p]) { vertex_of[p] = ids.size(); ids.push_back(p); }
+    if (ids.size() < 3 || ds.empty()) return false; // without a distance no clique leaves the bodies
+    typedef boost::adjacency_list<boost::setS, boost::vecS, boost::undirectedS> Graph;
+    Graph g(ids.size());
+    for (const Body& b : bodies)
+      for (std::size_t u = 0; u < b.points.size(); ++u)
+        for (std::size_t v = u + 1; v < b.points.size(); ++v)
+          if (relevant[b.points[u]] && relevant[b.points[v]])
+            boost::add_edge(vertex_of[b.points[u]], vertex_of[b.points[v]], g);
+    for (const Distance& d : ds) boost::add_edge(vertex_of[d.a], vertex_of[d.b], g);
+    std::vector<std::vector<std::size_t>> cliques;
+    Clique_collector vis{&cliques, &ids};
+    boost::bron_kerbosch_all_cliques(g, vis, 3);
+    std::sort(cliques.begin(), cliques.end());
+    bool added = false;
+    for (const auto& k : cliques) {
+      bool inside = false;
+      for (const Body& b : bodies)
+        if (std::includes(b.points.begin(), b.points.end(), k.begin(), k.end())) { inside = true; break; }
+      if (inside) continue;
+      add_implied(k);
+      added = true;
+    }
+    return added;
+  }
+
+  std::optional<FT> fixed_squared(std::size_t p, std::size_t q, std::vector<std::string>* sources) const
+  {
+    for (const Distance& d : c_.distances())
+      if ((d.a == p && d.b == q) || (d.a == q && d.b == p)) { if (sources) sources->push_back(d.name); return d.squared; }
+    for (const Body& b : c_.bodies())
+      if (b.contains(p) && b.contains(q)) {
+        auto v = body_squared(b, p, q);
+        if (v) { if (sources) sources->push_back(b.name); return v; }
+      }
+    return std::nullopt;
+  }
+
+  void add_implied(const std::vector<std::size_t>& k)
+  {
+    std::vector<std::string> sources;
+    std::vector<std::vector<FT>> dm(k.size(), std::vector<FT>(k.size(), FT(0)));
+    for (std::size_t u = 0; u < k.size(); ++u)
+      for (std::size_t v = u + 1; v < k.size(); ++v) {
+        auto d = fixed_squared(k[u], k[v], &sources);
+        if (!d) throw Input_error("standardize: the distance of '" + c_.label(k[u]) + "' and '" + c_.label(k[v]) +
+                                  "' is fixed but not known exactly (it runs through an implied placement); not supported yet");
+        dm[u][v] = dm[v][u] = *d;
+      }
+    const std::string who = "implied body {" + labels_of(c_, k, ",") + "}";
+    // Realizability, exactly from the squared distances (Cayley-Menger determinants).
+    bool planar_nondegenerate = false;
+    for (std::size_t a = 0; a < k.size(); ++a) for (std::size_t b = a + 1; b < k.size(); ++b)
+      for (std::size_t c = b + 1; c < k.size(); ++c) {
+        CGAL::Sign s = CGAL::sign(triangle_16_area_squared(dm[a][b], dm[a][c], dm[b][c]));
+        if (s == CGAL::NEGATIVE)
+          throw Input_error(who + ": the fixed distances between '" + c_.label(k[a]) + "', '" + c_.label(k[b]) + "' and '" +
+                            c_.label(k[c]) + "' violate the triangle inequality: no real configuration");
+        if (s == CGAL::POSITIVE) planar_nondegenerate = true;
+      }
+    if (!planar_nondegenerate)
+      throw Input_error(who + ": its fixed distances put all its points on one line (a degenerate body)");
+    bool spatial = false;
+    if (k.size() <= 12) {
+      for (std::size_t a = 0; a < k.size(); ++a) for (std::size_t b = a + 1; b < k.size(); ++b)
+        for (std::size_t c = b + 1; c < k.size(); ++c) for (std::size_t d = c + 1; d < k.size(); ++d) {
+          CGAL::Sign s = CGAL::sign(tetrahedron_288_volume_squared(dm[a][b], dm[a][c], dm[a][d], dm[b][c], dm[b][d], dm[c][d]));
+          if (s == CGAL::NEGATIVE)
+            throw Input_error(who + ": the fixed distances among '" + c_.label(k[a]) + "', '" + c_.label(k[b]) + "', '" +
+                              c_.label(k[c]) + "' and '" + c_.label(k[d]) + "' admit no real configuration");
+          if (s == CGAL::POSITIVE) spatial = true;
+        }
+    } else spatial = true; // conservative: report the mirror ambiguity
+    Body b;
+    std::vector<std::string> names;
+    for (std::size_t p : k) names.push_back(c_.label(p));
+    std::sort(names.begin(), names.end());
+    b.name = "I" + std::to_string(++implied_count_) + "{";
+    for (std::size_t i = 0; i < names.size(); ++i) b.name += (i ? "," : "") + names[i];
+    b.name += "}";
+    b.origin = Body_origin::IMPLIED;
+    b.points = k;
+    b.has_coordinates.assign(k.size(), false);
+    b.coordinates.assign(k.size(), Point_3(0, 0, 0));
+    for (std::size_t u = 0; u < k.size(); ++u)
+      for (std::size_t v = u + 1; v < k.size(); ++v) b.squared_distances.push_back(Squared_distance{u, v, dm[u][v]});
+    std::sort(sources.begin(), sources.end());
+    sources.erase(std::unique(sources.begin(), sources.end()), sources.end());
+    b.sources = sources;
+    b.mirror_variants = spatial ? 2 : 1;
+    note(who + " is added as body '" + b.name + "' (from " + [&] { std::string s; for (std::size_t i = 0; i < sources.size(); ++i) s += (i ? ", " : "") + sources[i]; return s; }() + ")");
+    c_.mutable_bodies().push_back(b);
+  }
+};
+
+} // namespace internal
+
+/*!
+\ingroup PkgRigidIncidenceRef
+\brief Turns a collection into a standard collection (Definition 3 of
+optimized_incidence_tree_parametrization.txt).
+
+Repeated until nothing changes:
+- a distance between two points of one body is absorbed into it, after checking that the
+  body fixes the same value;
+- a body whose points all lie in another body is absorbed, after checking that the
+  distances they share agree;
+- two bodies sharing 3 or more non-collinear points are merged (their relative placement is
+  determined; with coordinates on both sides the placement is a rational map, exact with
+  an exact kernel); bodies sharing 3 or more collinear points are rejected;
+- every maximal set of 3 or more points whose pairs are all at fixed distances (inside a
+  body or joined by a distance) and that is not inside one body becomes an implied body,
+  after checking that its distances can be realized (Cayley-Menger determinants, exactly).
+  Implied bodies keep their squared distances, and the bodies and distances that imply them.
+
+A body whose points are collinear is a bar and enters as distances between its points.
+The result keeps the frame and the name of the input. `log`, if given, receives one line
+per step taken.
+
+\throws Input_error naming the bodies, points or distances that disagree.
+*/
+template <class Traits>
+Rigid_body_collection<Traits> standardize(const Rigid_body_collection<Traits>& collection,
+                                          std::vector<std::string>* log = nullptr)
+{
+  internal::Standardizer<Traits> s(collection, log);
+  return s.run();
+}
+
+} // namespace Rigid_incidence
+} // namespace CGAL
+
+#endif
