@@ -166,11 +166,36 @@ private:
         note("body '" + small.name + "' lies inside body '" + big.name + "' and is absorbed");
         Body& host = bodies[j];
         for (const auto& s : small.sources) host.sources.push_back(s);
+        adopt_coordinates(host, small);
         host.mirror_variants = std::max(host.mirror_variants, host.all_coordinates() ? 1 : small.mirror_variants);
         bodies.erase(bodies.begin() + i);
         return true;
       }
     return false;
+  }
+
+  // A body known by distances only that absorbs a body with coordinates takes them over:
+  // exact coordinates are worth keeping (no square root is needed to place those points).
+  void adopt_coordinates(Body& host, const Body& small) const
+  {
+    if (!small.all_coordinates() || std::any_of(host.has_coordinates.begin(), host.has_coordinates.end(), [](bool b) { return b; }))
+      return;
+    std::vector<Squared_distance> kept;
+    for (std::size_t k = 0; k < small.points.size(); ++k) {
+      std::size_t h = host.local(small.points[k]);
+      host.has_coordinates[h] = true;
+      host.coordinates[h] = small.coordinates[k];
+    }
+    for (const auto& d : host.squared_distances)
+      if (!(host.has_coordinates[d.a] && host.has_coordinates[d.b])) kept.push_back(d);
+    host.squared_distances = kept;
+    // The points placed from distances relative to the adopted ones have one placement if
+    // the adopted points span space, else two (mirror images in their plane).
+    std::vector<std::vector<FT>> dm(small.points.size(), std::vector<FT>(small.points.size(), FT(0)));
+    for (std::size_t u = 0; u < small.points.size(); ++u)
+      for (std::size_t v = u + 1; v < small.points.size(); ++v) dm[u][v] = dm[v][u] = *small.squared(u, v);
+    bool all_adopted = host.all_coordinates();
+    if (all_adopted || spans_space(dm)) host.mirror_variants = 1;
   }
 
   // Every pairwise distance both bodies know among `pts` must agree.
@@ -300,7 +325,8 @@ private:
         Point_3 mapped = map_point(B.coordinates[B.local(p)]);
         const Point_3& given = A.coordinates[A.local(p)];
         FT d2 = Traits::squared_distance(mapped, given);
-        if (!c_.same_value(d2 + FT(1), FT(1)))
+        FT scale = Traits::squared_distance(a1, b1); // mismatch relative to the size of the shared frame
+        if (!c_.same_value(d2 + scale, scale))
           throw Input_error("bodies '" + A.name + "' and '" + B.name + "' share points " + labels_of(c_, common) +
                             " whose pairwise distances agree but which no rotation superposes (point '" +
                             c_.label(p) + "'): one body holds the mirror image of the other");

@@ -1,0 +1,15 @@
+#!/usr/bin/env bash
+# Builds and runs the benchmarks; writes readable tables (Markdown) and CSV under
+# build-bench/results/. Not part of the test run.
+# Usage: scripts/benchmark.sh [MAX_BODIES (default 40)] [REPEATS (default 5)]
+set -euo pipefail
+root="$(cd "$(dirname "$0")/.." && pwd)"
+"$root/scripts/install_deps.sh"
+build="${BENCH_BUILD_DIR:-$root/build-bench}"
+cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DRIGID_INCIDENCE_BUILD_BENCHMARKS=ON \
+      -DRIGID_INCIDENCE_BUILD_TESTS=OFF -DRIGID_INCIDENCE_BUILD_EXAMPLES=OFF >/dev/null
+cmake --build "$build" -j2
+mkdir -p "$build/results"
+"$build/benchmark/Rigid_incidence/benchmark_incidence_tree" "$build/results/incidence_tree" "${1:-40}" "${2:-5}"
+echo
+cat "$build/results/incidence_tree.md"
