@@ -11,11 +11,17 @@
 #include <CGAL/Rigid_incidence/Input_error.h>
 #include <CGAL/Rigid_incidence/Rigid_body_collection.h>
 #include <CGAL/Rigid_incidence/internal/cayley_menger.h>
+#include <CGAL/Rigid_incidence/internal/parse_number.h>
 
+#include <CGAL/Gmpq.h>
 #include <CGAL/Interval_nt.h>
+#include <CGAL/Interval_traits.h>
 
 #include <array>
 #include <optional>
+#include <sstream>
+#include <string>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -40,13 +46,55 @@ template <class IT> std::array<IT, 3> sub(const std::array<IT, 3>& a, const std:
 template <class IT> std::array<IT, 3> cross(const std::array<IT, 3>& a, const std::array<IT, 3>& b)
 { return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}; }
 
-template <class IT, class FT> IT enclose(const FT& x) { return IT(CGAL::to_interval(x)); }
+template <class T> struct is_interval_nt : std::false_type {};
+template <bool P> struct is_interval_nt<CGAL::Interval_nt<P>> : std::true_type {};
+
+// The exact rational value of a kernel number (double, Gmpq, or a lazy exact number).
+template <class FT> CGAL::Gmpq exact_rational(const FT& x)
+{
+  if constexpr (std::is_same<FT, double>::value || std::is_same<FT, float>::value) return CGAL::Gmpq(double(x));
+  else if constexpr (std::is_same<FT, CGAL::Gmpq>::value) return x;
+  else {
+    // a lazy exact number: print its exact value as p/q and read it back exactly
+    std::ostringstream os;
+    os << x.exact();
+    CGAL::Gmpq q;
+    std::string why;
+    if (!parse_exact_number(os.str(), q, why)) throw Input_error("cannot convert " + os.str() + " to a rational: " + why);
+    return q;
+  }
+}
+
+// Do two intervals meet?
+template <class IT> bool overlap(const IT& a, const IT& b)
+{
+  typedef CGAL::Interval_traits<IT> IT_traits;
+  typename IT_traits::Lower lower;
+  typename IT_traits::Upper upper;
+  return !(upper(a) < lower(b) || upper(b) < lower(a));
+}
+
+// An enclosure of x: a double interval around it, or (for multi-precision interval types)
+// the rational value rounded outward at the type's default precision.
+template <class IT, class FT> IT enclose(const FT& x)
+{
+  if constexpr (is_interval_nt<IT>::value) return IT(CGAL::to_interval(x));
+  else return IT(exact_rational(x));
+}
+
+// Switches the FPU to rounding upward for double intervals while it lives; MPFI rounds by itself.
+template <class IT, bool = is_interval_nt<IT>::value> struct Rounding_guard { typename IT::Protector p; };
+template <class IT> struct Rounding_guard<IT, false> {};
 
 // Nonnegative part of an enclosure of a square (round-off can make its lower end negative).
 template <class IT> IT nonnegative(const IT& x)
 {
-  if (x.sup() < 0) return IT(0);
-  return x.inf() < 0 ? IT(0, x.sup()) : x;
+  typedef CGAL::Interval_traits<IT> IT_traits;
+  typename IT_traits::Lower lower;
+  typename IT_traits::Upper upper;
+  if (upper(x) < 0) return IT(0);
+  if (lower(x) < 0) return typename IT_traits::Construct()(typename IT_traits::Bound(0), upper(x));
+  return x;
 }
 
 } // namespace internal
@@ -63,7 +111,9 @@ point that has two sides and by a known distance to a fourth point for the other
 Each square root and division is evaluated in interval arithmetic with outward rounding,
 so the enclosures contain the exact coordinates of the placement.
 
-\tparam IT `CGAL::Interval_nt<false>` (or `<true>` inside a `Protect_FPU_rounding` block).
+\tparam IT `CGAL::Interval_nt<false>` (double intervals), or `CGAL::Gmpfi` (MPFI: the exact
+input values are rounded outward at `Gmpfi`'s default precision, which a caller raises with
+`CGAL::Gmpfi::set_default_precision()` to make the enclosures as tight as asked).
 \throws Input_error if the body's known distances do not suffice to place a point.
 */
 template <class IT, class Traits>
@@ -73,7 +123,7 @@ Body_enclosure<IT> enclose_coordinates(const Rigid_body_collection<Traits>& c, s
   typedef typename Traits::FT FT;
   const auto& b = c.body(body);
   const std::size_t m = b.points.size();
-  typename IT::Protector protect;
+  internal::Rounding_guard<IT> protect;
   Body_enclosure<IT> out;
   out.variant = variant;
   out.coordinates.assign(m, P{IT(0), IT(0), IT(0)});
@@ -106,7 +156,6 @@ Body_enclosure<IT> enclose_coordinates(const Rigid_body_collection<Traits>& c, s
     out.coordinates[k] = P{x, y, IT(0)};
     placed[i] = placed[j] = placed[k] = true;
   }
-  bool mirror_used = false;
   bool progress = true;
   while (progress) {
     progress = false;
@@ -142,14 +191,11 @@ Body_enclosure<IT> enclose_coordinates(const Rigid_body_collection<Traits>& c, s
         if (q == (*tri)[0] || q == (*tri)[1] || q == (*tri)[2]) continue;
         IT known = internal::enclose<IT>(*sq(p, q));
         P dp = internal::sub(plus, out.coordinates[q]), dm = internal::sub(minus, out.coordinates[q]);
-        bool fits_plus = CGAL::do_intersect(internal::dot(dp, dp), known);
-        bool fits_minus = CGAL::do_intersect(internal::dot(dm, dm), known);
+        bool fits_plus = internal::overlap(internal::dot(dp, dp), known);
+        bool fits_minus = internal::overlap(internal::dot(dm, dm), known);
         if (fits_plus != fits_minus) { side = fits_plus ? 1 : -1; break; }
       }
-      if (side == 0) {
-        if (t.sup() > 0 && !mirror_used) mirror_used = true;
-        side = (variant == 0) ? 1 : -1;
-      }
+      if (side == 0) side = (variant == 0) ? 1 : -1;
       out.coordinates[p] = side > 0 ? plus : minus;
       placed[p] = true;
       progress = true;
@@ -160,7 +206,7 @@ Body_enclosure<IT> enclose_coordinates(const Rigid_body_collection<Traits>& c, s
                                       "' has too few known distances to be placed");
   for (const auto& d : b.squared_distances) {
     P diff = internal::sub(out.coordinates[d.a], out.coordinates[d.b]);
-    if (!CGAL::do_intersect(internal::dot(diff, diff), internal::enclose<IT>(FT(d.squared)))) out.consistent = false;
+    if (!internal::overlap(internal::dot(diff, diff), internal::enclose<IT>(FT(d.squared)))) out.consistent = false;
   }
   return out;
 }
