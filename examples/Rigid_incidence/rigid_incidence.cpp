@@ -35,7 +35,8 @@ static const char* usage_text =
   "\n"
   "Options:\n"
   "  --json         print the analysis as JSON on standard output instead of text; keys:\n"
-  "                 scene, bodies, implied_bodies, standardization, dof, overlap_graph,\n"
+  "                 scene, bodies, implied_bodies, standardization, remaining_distances, dof,\n"
+  "                 overlap_graph,\n"
   "                 covering_set, non_covering, incidence_tree {root, edges [[parent, child,\n"
   "                 weight]], weight, depth_sum, proven_optimal, strategy}, optimal_trees_tied,\n"
   "                 reduced_variables, naive_variables\n"
@@ -69,6 +70,12 @@ int analyze(const Options& o)
     throw RI::Input_error(o.scene + ": " + e.what());
   }
   RI::Dof_count dof = RI::dof_count(c);
+  if (!dof.connected)
+    std::cerr << "rigid_incidence: warning: " << o.scene << ": the scene is not connected (" << dof.components.size()
+              << " separate parts)\n";
+  if (dof.dof != 0)
+    std::cerr << "rigid_incidence: warning: " << o.scene << ": " << dof.verdict() << " by the dof count (dof = " << dof.dof
+              << ")\n";
   RI::Incidence_tree t = RI::optimal_incidence_tree(c);
   RI::Overlap_graph og(c);
   // The naive formulation gives each body of the scene a free rigid motion (6 variables)
@@ -177,6 +184,10 @@ int analyze(const Options& o)
   std::cout << "\nreduced system: " << t.weight << " variables, against 6(k-1) = " << naive
             << " for the naive formulation (a free rigid motion for each of the k = " << scene.bodies.size()
             << " bodies of the scene, one fixed)\n";
+  if (!dof.connected || dof.dof != 0)
+    std::cout << "  note: the scene is " << (dof.connected ? "" : "not connected and ") << dof.verdict()
+              << " by the dof count (dof = " << dof.dof << "): the tree covers the shared points, but its variables"
+              << " and the remaining equations will not form a square system\n";
   return 0;
 }
 

@@ -22,6 +22,7 @@ report the message and exit with status 2, as the command-line tool does.
 class Input_error : public std::runtime_error
 {
 public:
+  /// An error with the message `what`.
   explicit Input_error(const std::string& what) : std::runtime_error(what) {}
 };
 

@@ -38,11 +38,18 @@ pair, so that it stays linear in the size of the collection.
 class Overlap_graph
 {
 public:
-  struct Edge_property { int weight; std::vector<std::size_t> shared; };
+  /// The property of an edge: its weight and the points the two bodies share.
+  struct Edge_property
+  {
+    int weight;                       ///< w(number of shared points): 1 or 3
+    std::vector<std::size_t> shared;  ///< the shared points (global indices)
+  };
+  /// The graph: a vertex per body (same index), an edge per pair of bodies sharing points.
   typedef boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS, boost::no_property, Edge_property> Graph;
 
   Overlap_graph() = default;
 
+  /// The overlap graph of the collection `c`.
   template <class Traits>
   explicit Overlap_graph(const Rigid_body_collection<Traits>& c) : graph_(c.number_of_bodies())
   {
@@ -59,7 +66,9 @@ public:
       boost::add_edge(s.first.first, s.first.second, Edge_property{overlap_weight(s.second.size()), s.second}, graph_);
   }
 
+  /// The Boost graph of the pairs that share points.
   const Graph& graph() const { return graph_; }
+  /// The number of bodies (vertices).
   std::size_t number_of_bodies() const { return boost::num_vertices(graph_); }
 
   /// w(k) for the pair (i, j); 6 when they share no point.

@@ -30,6 +30,8 @@ enum class Body_origin
   IMPLIED  ///< a maximal set of points all at fixed distances, not in one body (standardize)
 };
 
+/// \ingroup PkgRigidIncidenceRef
+/// The name of a body origin: "user", "merged" or "implied".
 inline const char* to_string(Body_origin o)
 {
   switch (o) { case Body_origin::USER: return "user"; case Body_origin::MERGED: return "merged"; default: return "implied"; }
@@ -54,22 +56,28 @@ template <class Traits>
 class Rigid_body_collection
 {
 public:
-  typedef Traits Traits_type;
-  typedef typename Traits::FT FT;
-  typedef typename Traits::Point_3 Point_3;
+  typedef Traits Traits_type;                 ///< the traits class, a model of `RigidIncidenceTraits`
+  typedef typename Traits::FT FT;             ///< the number type of coordinates and squared distances
+  typedef typename Traits::Point_3 Point_3;   ///< the point type of local coordinates
 
   /// A squared distance between two points, given by their indices (into `points` of a body,
   /// or global point indices for the collection's distances).
-  struct Squared_distance { std::size_t a, b; FT squared; };
+  struct Squared_distance
+  {
+    std::size_t a;   ///< index of the first point
+    std::size_t b;   ///< index of the second point
+    FT squared;      ///< the squared distance
+  };
 
+  /// A rigid body of the collection: its points (global indices) and what fixes them.
   struct Body
   {
-    std::string name;
+    std::string name;                       ///< unique name (user's, or made by `standardize()`)
     std::vector<std::size_t> points;        ///< global point indices, sorted
     std::vector<bool> has_coordinates;      ///< per point: exact local coordinates known
     std::vector<Point_3> coordinates;       ///< per point, valid where `has_coordinates`
     std::vector<Squared_distance> squared_distances; ///< local indices; pairs not both with coordinates
-    Body_origin origin = Body_origin::USER;
+    Body_origin origin = Body_origin::USER; ///< where the body comes from
     std::vector<std::string> sources;       ///< user bodies and distances this body stands for
     int mirror_variants = 1;                ///< 2 if its distances fix it only up to a mirror image
 
@@ -79,7 +87,9 @@ public:
       auto it = std::lower_bound(points.begin(), points.end(), p);
       return (it != points.end() && *it == p) ? std::size_t(it - points.begin()) : npos;
     }
+    /// `true` if global point `p` is a point of the body.
     bool contains(std::size_t p) const { return local(p) != npos; }
+    /// `true` if every point of the body has exact local coordinates (the body is not known by distances only).
     bool all_coordinates() const
     { return std::all_of(has_coordinates.begin(), has_coordinates.end(), [](bool b) { return b; }); }
     /// The squared distance between the local points `i` and `j`, when the body knows it exactly.
@@ -93,17 +103,22 @@ public:
     }
   };
 
+  /// A fixed distance between two points of the collection.
   struct Distance
   {
-    std::size_t a, b;   ///< global point indices
-    FT squared;
+    std::size_t a;      ///< global index of the first point
+    std::size_t b;      ///< global index of the second point
+    FT squared;         ///< the squared distance
     std::string name;   ///< for messages, e.g. "distance G1-D2"
   };
 
+  /// Returned for "no such point or body".
   static constexpr std::size_t npos = std::size_t(-1);
 
   // ---------------------------------------------------------------- points
+  /// The number of distinct point labels (physical points).
   std::size_t number_of_points() const { return labels_.size(); }
+  /// The label of point `p`.
   const std::string& label(std::size_t p) const { return labels_[p]; }
   /// The index of the point labelled `l`, or `npos`.
   std::size_t point_index(const std::string& l) const
@@ -113,9 +128,13 @@ public:
   }
 
   // ---------------------------------------------------------------- bodies
+  /// The number of bodies.
   std::size_t number_of_bodies() const { return bodies_.size(); }
+  /// Body `i`.
   const Body& body(std::size_t i) const { return bodies_[i]; }
+  /// All bodies, in index order.
   const std::vector<Body>& bodies() const { return bodies_; }
+  /// The index of the body named `name`, or `npos`.
   std::size_t body_index(const std::string& name) const
   {
     for (std::size_t i = 0; i < bodies_.size(); ++i) if (bodies_[i].name == name) return i;
@@ -177,6 +196,7 @@ public:
     distances_.push_back(Distance{pa, pb, squared, where});
   }
 
+  /// The fixed distances (those not absorbed into a body).
   const std::vector<Distance>& distances() const { return distances_; }
 
   /// Names the body in whose local frame results are reported (default: the first body).
@@ -185,6 +205,7 @@ public:
     if (body_index(body_name) == npos) throw Input_error("frame: names no body: '" + body_name + "'");
     frame_ = body_name;
   }
+  /// The name of the frame body: the one named by `set_frame()`, else the first body.
   std::string frame() const { return frame_.empty() && !bodies_.empty() ? bodies_.front().name : frame_; }
 
   std::string name;  ///< the scene's name, for reports
@@ -200,7 +221,7 @@ public:
       return std::abs(a - b) <= consistency_tolerance * scale;
     }
   }
-  double consistency_tolerance = 1e-9;
+  double consistency_tolerance = 1e-9; ///< relative tolerance of `same_value()` for an inexact `FT`
 
   /// The points shared by two or more bodies (the set X of the papers).
   std::vector<std::size_t> shared_points() const
@@ -222,7 +243,9 @@ public:
   }
 
   // -------------------------------------------- low-level access used by standardize()
+  /// Write access to the bodies, for `standardize()`: it bypasses the checks of `add_body()`.
   std::vector<Body>& mutable_bodies() { return bodies_; }
+  /// Write access to the distances, for `standardize()`: it bypasses the checks of `add_distance()`.
   std::vector<Distance>& mutable_distances() { return distances_; }
 
 private:

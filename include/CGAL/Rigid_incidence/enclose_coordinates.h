@@ -131,8 +131,8 @@ Body_enclosure<IT> enclose_coordinates(const Rigid_body_collection<Traits>& c, s
   auto sq = [&](std::size_t i, std::size_t j) { return b.squared(i, j); };
   for (std::size_t i = 0; i < m; ++i)
     if (b.has_coordinates[i]) {
-      out.coordinates[i] = P{internal::enclose<IT>(b.coordinates[i].x()), internal::enclose<IT>(b.coordinates[i].y()),
-                             internal::enclose<IT>(b.coordinates[i].z())};
+      out.coordinates[i] = P{internal::enclose<IT>(Traits::x(b.coordinates[i])), internal::enclose<IT>(Traits::y(b.coordinates[i])),
+                             internal::enclose<IT>(Traits::z(b.coordinates[i]))};
       placed[i] = true;
     }
   std::size_t n_placed = std::count(placed.begin(), placed.end(), true);

@@ -31,12 +31,18 @@ namespace Rigid_incidence {
 /// A rooted incidence tree over a covering set, as `optimal_incidence_tree()` returns it.
 struct Incidence_tree
 {
-  static constexpr std::size_t npos = std::size_t(-1);
-  struct Edge { std::size_t parent, child; int weight; };
+  static constexpr std::size_t npos = std::size_t(-1); ///< "no body"
+  /// An edge of the tree, oriented from the root.
+  struct Edge
+  {
+    std::size_t parent;  ///< body index of the parent
+    std::size_t child;   ///< body index of the child
+    int weight;          ///< its weight in the overlap graph
+  };
 
   std::vector<std::size_t> covering_set;  ///< body indices, sorted
   std::vector<std::size_t> non_covering;  ///< the other bodies, sorted
-  std::size_t root = npos;
+  std::size_t root = npos;                ///< body index of the root
   std::vector<Edge> edges;                ///< breadth-first from the root: a parent before its children
   long weight = 0;                        ///< total edge weight = number of variables of the reduced system
   long depth_sum = 0;                     ///< sum over the tree's bodies of their depth (the root has depth 0)
@@ -47,9 +53,9 @@ struct Incidence_tree
   bool ties_complete = true;     ///< false if the tie count was capped
   bool proven_optimal = true;    ///< false if a search budget ran out or the heuristic was used
   std::string strategy;          ///< how the tree was found, for reports
-  std::size_t covering_sets_examined = 0;
-  std::size_t search_nodes = 0;
-  std::size_t trees_examined = 0;
+  std::size_t covering_sets_examined = 0; ///< covering sets reached by the search (leaves)
+  std::size_t search_nodes = 0;           ///< nodes of the covering-set search
+  std::size_t trees_examined = 0;         ///< minimum spanning trees enumerated
 };
 
 /// \ingroup PkgRigidIncidenceRef

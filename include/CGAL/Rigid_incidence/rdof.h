@@ -110,7 +110,7 @@ struct Dof_count
   long removed = 0;         ///< rdof(D, D): removed by the shared points
   long distances = 0;       ///< distances not absorbed into a body: one equation each
   long dof = 0;             ///< body_dof - removed - distances
-  bool connected = true;
+  bool connected = true;    ///< the bodies form one connected scene
   std::vector<std::vector<std::size_t>> components; ///< body indices per connected part
 
   /// "well-constrained", "under-constrained" or "over-constrained" by the count.
@@ -123,7 +123,7 @@ struct Dof_count
 
 /*!
 \ingroup PkgRigidIncidenceRef
-\brief Counts the dof of a (standard) collection: 6(k-1) - rdof(D, D) - #distances.
+\brief Counts the dof of a (standard) collection: 6(k-1) - rdof(D, D) - (number of distances).
 
 The count is necessary, not sufficient, for generic rigidity (deciding body-multi-pin
 rigidity in general is as hard as 3D bar-and-joint rigidity, see the papers). Bodies are

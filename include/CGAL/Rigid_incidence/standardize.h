@@ -66,10 +66,9 @@ class Standardizer
   typedef typename Collection::Squared_distance Squared_distance;
   typedef typename Traits::FT FT;
   typedef typename Traits::Point_3 Point_3;
-  typedef typename Traits::Vector_3 Vector_3;
 
 public:
-  Standardizer(const Collection& in, std::vector<std::string>* log) : c_(in), log_(log) {}
+  Standardizer(const Collection& in, std::vector<std::string>* log) : c_(in), log_(log), frame_name_(in.frame()) {}
 
   Collection run()
   {
@@ -85,15 +84,30 @@ public:
       if (changed) continue;
       changed = add_implied_bodies();
     }
+    // The frame passes to the body that absorbed or merged the frame body; that body keeps
+    // the frame body's coordinates (see merge_one_pair and absorb_bodies).
+    if (!frame_name_.empty() && c_.body_index(frame_name_) == Collection::npos)
+      for (const Body& b : c_.bodies())
+        if (holds_frame(b)) {
+          note("the scene's frame '" + frame_name_ + "' is now body '" + b.name + "', in the same coordinates");
+          c_.set_frame(b.name);
+          break;
+        }
     return c_;
   }
 
 private:
   Collection c_;
   std::vector<std::string>* log_;
+  std::string frame_name_; // the user body whose local frame results are reported in
   std::size_t implied_count_ = 0, merged_count_ = 0;
 
   void note(const std::string& s) { if (log_) log_->push_back(s); }
+
+  static void add_source(Body& b, const std::string& s)
+  {
+    if (std::find(b.sources.begin(), b.sources.end(), s) == b.sources.end()) b.sources.push_back(s);
+  }
 
   // A body whose points are all collinear is a bar: it fixes only its pairwise distances
   // (5 dof, not 6), so it enters as distances.
@@ -110,6 +124,9 @@ private:
     }
     bodies = kept;
     for (const Body& b : bars) {
+      if (b.name == frame_name_)
+        throw Input_error("body '" + b.name + "' is the scene's frame but has all its points on one line: a bar has no frame"
+                          " of its own; name another body as \"frame\"");
       note("body '" + b.name + "' has all its points on one line: it is a bar and enters as distances");
       for (std::size_t i = 0; i < b.points.size(); ++i)
         for (std::size_t j = i + 1; j < b.points.size(); ++j)
@@ -140,7 +157,7 @@ private:
         }
       if (host == Collection::npos) { ++k; continue; }
       note(d.name + " lies inside body '" + bodies[host].name + "' and is absorbed");
-      bodies[host].sources.push_back(d.name);
+      add_source(bodies[host], d.name);
       ds.erase(ds.begin() + k);
       changed = true;
     }
@@ -163,9 +180,23 @@ private:
         if (!std::includes(big.points.begin(), big.points.end(), small.points.begin(), small.points.end())) continue;
         if (small.points.size() == big.points.size() && i < j) continue; // absorb the later of two equal sets
         check_agreement(small, big, small.points);
+        std::vector<Point_3> reframed;
+        if (small.all_coordinates() && big.all_coordinates()) {
+          // distances agree; a rotation must superpose them too (not a mirror image)
+          auto dm = distance_matrix(small, nullptr, small.points);
+          auto base = non_collinear_triple(dm);
+          if (base) {
+            std::vector<Point_3> images = map_into(small, big, small.points, *base);
+            if (holds_frame(small)) reframed = images; // keep the scene's frame
+          }
+        }
         note("body '" + small.name + "' lies inside body '" + big.name + "' and is absorbed");
         Body& host = bodies[j];
-        for (const auto& s : small.sources) host.sources.push_back(s);
+        for (const auto& s : small.sources) add_source(host, s);
+        if (!reframed.empty()) {
+          host.coordinates = reframed;
+          note("body '" + host.name + "' is expressed in the frame of '" + frame_name_ + "', the scene's frame");
+        }
         adopt_coordinates(host, small);
         host.mirror_variants = std::max(host.mirror_variants, host.all_coordinates() ? 1 : small.mirror_variants);
         bodies.erase(bodies.begin() + i);
@@ -241,7 +272,9 @@ private:
           throw Input_error("bodies '" + bodies[i].name + "' and '" + bodies[j].name + "' share " + std::to_string(common.size()) +
                             " collinear points (" + labels_of(c_, common) +
                             "): they share only an axis, which must be given by exactly 2 shared points");
-        Body merged = merge(bodies[i], bodies[j], common, *base, dm);
+        // the merged body keeps the coordinates (the frame) of the body holding the scene's frame
+        bool swap = holds_frame(bodies[j]) && bodies[j].all_coordinates();
+        Body merged = swap ? merge(bodies[j], bodies[i], common, *base, dm) : merge(bodies[i], bodies[j], common, *base, dm);
         note("bodies '" + bodies[i].name + "' and '" + bodies[j].name + "' share " + std::to_string(common.size()) +
              " non-collinear points (" + labels_of(c_, common) + ") and are merged into '" + merged.name + "'");
         bodies.erase(bodies.begin() + j);
@@ -273,6 +306,63 @@ private:
     return false;
   }
 
+  // The images in A's frame of all of B's points, under the rigid motion taking B's frame to
+  // A's: the rotation maps the frame (u, v, u x v) of three shared points in B to the same
+  // frame in A, M = [u1 v1 w1] [u2 v2 w2]^{-1}. It is rational (no square root: exact with an
+  // exact kernel). Throws if a shared point does not land on itself (mirror images).
+  std::vector<Point_3> map_into(const Body& A, const Body& B, const std::vector<std::size_t>& common,
+                                const std::array<std::size_t, 3>& base) const
+  {
+    std::size_t pa = common[base[0]], pb = common[base[1]], pc = common[base[2]];
+    const Point_3 a1 = A.coordinates[A.local(pa)], b1 = A.coordinates[A.local(pb)], c1 = A.coordinates[A.local(pc)];
+    const Point_3 a2 = B.coordinates[B.local(pa)], b2 = B.coordinates[B.local(pb)], c2 = B.coordinates[B.local(pc)];
+    auto diff = [](const Point_3& p, const Point_3& q) {
+      return std::array<FT, 3>{Traits::x(q) - Traits::x(p), Traits::y(q) - Traits::y(p), Traits::z(q) - Traits::z(p)};
+    };
+    auto cross = [](const std::array<FT, 3>& a, const std::array<FT, 3>& b) {
+      return std::array<FT, 3>{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+    };
+    std::array<FT, 3> u1 = diff(a1, b1), v1 = diff(a1, c1), w1 = cross(u1, v1);
+    std::array<FT, 3> u2 = diff(a2, b2), v2 = diff(a2, c2), w2 = cross(u2, v2);
+    FT S[3][3], T[3][3]; // columns u, v, w
+    for (int r = 0; r < 3; ++r) {
+      S[r][0] = u2[r]; S[r][1] = v2[r]; S[r][2] = w2[r];
+      T[r][0] = u1[r]; T[r][1] = v1[r]; T[r][2] = w1[r];
+    }
+    FT det = S[0][0] * (S[1][1] * S[2][2] - S[1][2] * S[2][1]) - S[0][1] * (S[1][0] * S[2][2] - S[1][2] * S[2][0]) +
+             S[0][2] * (S[1][0] * S[2][1] - S[1][1] * S[2][0]);
+    FT inv[3][3];
+    inv[0][0] = (S[1][1] * S[2][2] - S[1][2] * S[2][1]) / det; inv[0][1] = (S[0][2] * S[2][1] - S[0][1] * S[2][2]) / det;
+    inv[0][2] = (S[0][1] * S[1][2] - S[0][2] * S[1][1]) / det; inv[1][0] = (S[1][2] * S[2][0] - S[1][0] * S[2][2]) / det;
+    inv[1][1] = (S[0][0] * S[2][2] - S[0][2] * S[2][0]) / det; inv[1][2] = (S[0][2] * S[1][0] - S[0][0] * S[1][2]) / det;
+    inv[2][0] = (S[1][0] * S[2][1] - S[1][1] * S[2][0]) / det; inv[2][1] = (S[0][1] * S[2][0] - S[0][0] * S[2][1]) / det;
+    inv[2][2] = (S[0][0] * S[1][1] - S[0][1] * S[1][0]) / det;
+    FT M[3][3];
+    for (int r = 0; r < 3; ++r)
+      for (int k = 0; k < 3; ++k) M[r][k] = T[r][0] * inv[0][k] + T[r][1] * inv[1][k] + T[r][2] * inv[2][k];
+    std::vector<Point_3> images;
+    for (const Point_3& p : B.coordinates) {
+      FT d[3] = {Traits::x(p) - Traits::x(a2), Traits::y(p) - Traits::y(a2), Traits::z(p) - Traits::z(a2)};
+      images.push_back(Traits::point(Traits::x(a1) + M[0][0] * d[0] + M[0][1] * d[1] + M[0][2] * d[2],
+                                     Traits::y(a1) + M[1][0] * d[0] + M[1][1] * d[1] + M[1][2] * d[2],
+                                     Traits::z(a1) + M[2][0] * d[0] + M[2][1] * d[1] + M[2][2] * d[2]));
+    }
+    const FT scale = Traits::squared_distance(a1, b1); // a mismatch is measured against the shared frame's size
+    for (std::size_t p : common) {
+      FT d2 = Traits::squared_distance(images[B.local(p)], A.coordinates[A.local(p)]);
+      if (!c_.same_value(d2 + scale, scale))
+        throw Input_error("bodies '" + A.name + "' and '" + B.name + "' share points " + labels_of(c_, common) +
+                          " whose pairwise distances agree but which no rotation superposes (point '" + c_.label(p) +
+                          "'): one body holds the mirror image of the other");
+    }
+    return images;
+  }
+
+  bool holds_frame(const Body& b) const
+  {
+    return std::find(b.sources.begin(), b.sources.end(), frame_name_) != b.sources.end();
+  }
+
   Body merge(const Body& A, const Body& B, const std::vector<std::size_t>& common,
              const std::array<std::size_t, 3>& base, const std::vector<std::vector<FT>>& dm)
   {
@@ -280,56 +370,16 @@ private:
     m.name = "merged" + std::to_string(++merged_count_) + "(" + A.name + "+" + B.name + ")";
     m.origin = Body_origin::MERGED;
     m.sources = A.sources;
-    m.sources.insert(m.sources.end(), B.sources.begin(), B.sources.end());
+    for (const auto& src : B.sources) add_source(m, src);
     std::set_union(A.points.begin(), A.points.end(), B.points.begin(), B.points.end(), std::back_inserter(m.points));
     m.has_coordinates.assign(m.points.size(), false);
     m.coordinates.assign(m.points.size(), Point_3(0, 0, 0));
     if (A.all_coordinates() && B.all_coordinates()) {
-      // Both bodies have coordinates: B's frame maps to A's by the rotation taking the
-      // frame (u, v, u x v) of three shared points in B to the same frame in A. It is
-      // rational: no square root, exact with an exact kernel.
-      std::size_t pa = common[base[0]], pb = common[base[1]], pc = common[base[2]];
-      const Point_3 a1 = A.coordinates[A.local(pa)], b1 = A.coordinates[A.local(pb)], c1 = A.coordinates[A.local(pc)];
-      const Point_3 a2 = B.coordinates[B.local(pa)], b2 = B.coordinates[B.local(pb)], c2 = B.coordinates[B.local(pc)];
-      Vector_3 u1 = Traits::vector(a1, b1), v1 = Traits::vector(a1, c1), w1 = Traits::cross_product(u1, v1);
-      Vector_3 u2 = Traits::vector(a2, b2), v2 = Traits::vector(a2, c2), w2 = Traits::cross_product(u2, v2);
-      // M = [u1 v1 w1] * [u2 v2 w2]^{-1}
-      FT S[3][3] = {{u2.x(), v2.x(), w2.x()}, {u2.y(), v2.y(), w2.y()}, {u2.z(), v2.z(), w2.z()}};
-      FT T[3][3] = {{u1.x(), v1.x(), w1.x()}, {u1.y(), v1.y(), w1.y()}, {u1.z(), v1.z(), w1.z()}};
-      FT inv[3][3];
-      FT det = S[0][0] * (S[1][1] * S[2][2] - S[1][2] * S[2][1]) - S[0][1] * (S[1][0] * S[2][2] - S[1][2] * S[2][0]) +
-               S[0][2] * (S[1][0] * S[2][1] - S[1][1] * S[2][0]);
-      inv[0][0] = (S[1][1] * S[2][2] - S[1][2] * S[2][1]) / det; inv[0][1] = (S[0][2] * S[2][1] - S[0][1] * S[2][2]) / det;
-      inv[0][2] = (S[0][1] * S[1][2] - S[0][2] * S[1][1]) / det; inv[1][0] = (S[1][2] * S[2][0] - S[1][0] * S[2][2]) / det;
-      inv[1][1] = (S[0][0] * S[2][2] - S[0][2] * S[2][0]) / det; inv[1][2] = (S[0][2] * S[1][0] - S[0][0] * S[1][2]) / det;
-      inv[2][0] = (S[1][0] * S[2][1] - S[1][1] * S[2][0]) / det; inv[2][1] = (S[0][1] * S[2][0] - S[0][0] * S[2][1]) / det;
-      inv[2][2] = (S[0][0] * S[1][1] - S[0][1] * S[1][0]) / det;
-      FT M[3][3];
-      for (int r = 0; r < 3; ++r) for (int s = 0; s < 3; ++s) {
-        M[r][s] = FT(0);
-        for (int k = 0; k < 3; ++k) M[r][s] += T[r][k] * inv[k][s];
-      }
-      auto map_point = [&](const Point_3& p) {
-        FT d[3] = {p.x() - a2.x(), p.y() - a2.y(), p.z() - a2.z()};
-        FT o[3];
-        for (int r = 0; r < 3; ++r) o[r] = M[r][0] * d[0] + M[r][1] * d[1] + M[r][2] * d[2];
-        return Traits::point(a1.x() + o[0], a1.y() + o[1], a1.z() + o[2]);
-      };
+      std::vector<Point_3> images = map_into(A, B, common, base);
       for (std::size_t k = 0; k < m.points.size(); ++k) {
         std::size_t p = m.points[k];
-        if (A.contains(p)) { m.coordinates[k] = A.coordinates[A.local(p)]; }
-        else m.coordinates[k] = map_point(B.coordinates[B.local(p)]);
+        m.coordinates[k] = A.contains(p) ? A.coordinates[A.local(p)] : images[B.local(p)];
         m.has_coordinates[k] = true;
-      }
-      for (std::size_t p : common) {
-        Point_3 mapped = map_point(B.coordinates[B.local(p)]);
-        const Point_3& given = A.coordinates[A.local(p)];
-        FT d2 = Traits::squared_distance(mapped, given);
-        FT scale = Traits::squared_distance(a1, b1); // mismatch relative to the size of the shared frame
-        if (!c_.same_value(d2 + scale, scale))
-          throw Input_error("bodies '" + A.name + "' and '" + B.name + "' share points " + labels_of(c_, common) +
-                            " whose pairwise distances agree but which no rotation superposes (point '" +
-                            c_.label(p) + "'): one body holds the mirror image of the other");
       }
       return m;
     }

@@ -22,19 +22,33 @@ only when the scene is turned into a `Rigid_body_collection` by `make_collection
 */
 struct Scene
 {
-  struct Point { std::string label; CGAL::Gmpq x, y, z; };
-  struct Body { std::string name; std::vector<Point> points; };
+  /// A labelled point with its local coordinates.
+  struct Point
+  {
+    std::string label;  ///< the point's label
+    CGAL::Gmpq x;       ///< x coordinate
+    CGAL::Gmpq y;       ///< y coordinate
+    CGAL::Gmpq z;       ///< z coordinate
+  };
+  /// A body: its name and its points, in the order of the file.
+  struct Body
+  {
+    std::string name;           ///< the body's name
+    std::vector<Point> points;  ///< its points
+  };
+  /// A fixed distance between two labelled points.
   struct Distance
   {
-    std::string a, b;          ///< the two point labels
+    std::string a;             ///< the first point label
+    std::string b;             ///< the second point label
     CGAL::Gmpq squared;        ///< the squared distance (exact)
-    bool given_as_length = false;
+    bool given_as_length = false; ///< the file gave "length" rather than "squared"
     CGAL::Gmpq length;         ///< the length, when the file gave "length"
   };
   std::string source;          ///< file name (or "<stream>") used in error messages
-  std::string name;
-  std::vector<Body> bodies;
-  std::vector<Distance> distances;
+  std::string name;            ///< the scene's name (may be empty)
+  std::vector<Body> bodies;    ///< the bodies, in the order of the file
+  std::vector<Distance> distances; ///< the distances, in the order of the file
   std::string frame;           ///< empty: the first body
 };
 

@@ -163,9 +163,14 @@ public:
     Scene scene;
     scene.source = source_;
     expect(root, Json_node::OBJECT, "top level");
-    static const std::set<std::string> known = {"format", "name", "bodies", "distances", "frame", "inequalities", "free_distance", "comment"};
-    for (const auto& m : root.members)
-      if (!known.count(m.first)) fail("field \"" + m.first + "\"", "unknown field (known: format, name, bodies, distances, frame)");
+    static const std::set<std::string> known = {"format", "name", "bodies", "distances", "frame", "comment"};
+    static const std::set<std::string> later = {"inequalities", "free_distance"};
+    for (const auto& m : root.members) {
+      if (later.count(m.first))
+        fail("field \"" + m.first + "\"", "not supported by this version of the package (it would be ignored)");
+      if (!known.count(m.first))
+        fail("field \"" + m.first + "\"", "unknown field (known: format, name, bodies, distances, frame, comment)");
+    }
     const Json_node* format = member(root, "format", "top level");
     if (!format) fail("", "missing field \"format\" (expected \"rigid-incidence-scene/1\")");
     std::string f = string_field(*format, "field \"format\"");
@@ -295,7 +300,7 @@ inline Scene read_scene(const std::string& filename)
 /*!
 \ingroup PkgRigidIncidenceIO
 \brief Builds a `Rigid_body_collection` from a scene, converting each exact number to
-`Traits::FT` (exactly when `FT` is an exact field, else to the nearest double).
+`Traits::FT` (exactly when `FT` is an exact field, else to the nearest double, within the range of Rigid_incidence_traits::from_rational()).
 
 \throws Input_error for geometric faults, named with the scene's source: coincident points
 inside a body, a distance naming an unknown point, two distances on one pair that disagree.
@@ -308,15 +313,17 @@ Rigid_body_collection<Traits> make_collection(const Scene& scene)
   try {
     for (const auto& b : scene.bodies) {
       std::vector<std::pair<std::string, typename Traits::Point_3>> pts;
-      for (const auto& p : b.points)
-        pts.emplace_back(p.label, Traits::point(Traits::from_rational(p.x), Traits::from_rational(p.y),
-                                                Traits::from_rational(p.z)));
+      for (const auto& p : b.points) {
+        const std::string where = "body '" + b.name + "': point '" + p.label + "': coordinate ";
+        pts.emplace_back(p.label, Traits::point(Traits::from_rational(p.x, where + "x"), Traits::from_rational(p.y, where + "y"),
+                                                Traits::from_rational(p.z, where + "z")));
+      }
       c.add_body(b.name, pts);
     }
     for (std::size_t i = 0; i < scene.distances.size(); ++i) {
       const auto& d = scene.distances[i];
-      c.add_distance(d.a, d.b, Traits::from_rational(d.squared),
-                     "distances[" + std::to_string(i) + "] ('" + d.a + "'-'" + d.b + "')");
+      const std::string where = "distances[" + std::to_string(i) + "] ('" + d.a + "'-'" + d.b + "')";
+      c.add_distance(d.a, d.b, Traits::from_rational(d.squared, where + ": squared value"), where);
     }
     if (!scene.frame.empty()) c.set_frame(scene.frame);
   } catch (const Input_error& e) {

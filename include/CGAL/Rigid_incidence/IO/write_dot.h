@@ -16,12 +16,15 @@
 namespace CGAL {
 namespace Rigid_incidence {
 namespace internal {
-inline std::string dot_quote(const std::string& s)
+// Escapes user text (names, labels) for a DOT string.
+inline std::string dot_escape(const std::string& s)
 {
-  std::string r = "\"";
+  std::string r;
   for (char ch : s) { if (ch == '"' || ch == '\\') r += '\\'; r += ch; }
-  return r + "\"";
+  return r;
 }
+// Quotes already escaped DOT text (which may hold line breaks written as \n).
+inline std::string dot_quote(const std::string& escaped) { return "\"" + escaped + "\""; }
 } // namespace internal
 
 /*!
@@ -36,20 +39,21 @@ template <class Traits>
 void write_overlap_graph_dot(std::ostream& os, const Rigid_body_collection<Traits>& c, const Incidence_tree& t)
 {
   using internal::dot_quote;
+  using internal::dot_escape;
   Overlap_graph og(c);
   std::vector<bool> in_cover(c.number_of_bodies(), false);
   for (std::size_t b : t.covering_set) in_cover[b] = true;
   os << "graph overlap {\n";
-  os << "  label=" << dot_quote("overlap graph of " + (c.name.empty() ? std::string("scene") : c.name) +
+  os << "  label=" << dot_quote("overlap graph of " + dot_escape(c.name.empty() ? std::string("scene") : c.name) +
                                   ": tree weight " + std::to_string(t.weight) + ", depth sum " + std::to_string(t.depth_sum) +
                                   " (bold: incidence tree; weight-6 pairs omitted)") << ";\n";
   os << "  node [fontname=Helvetica]; edge [fontname=Helvetica];\n";
   for (std::size_t i = 0; i < c.number_of_bodies(); ++i) {
     const auto& b = c.body(i);
     std::string pts;
-    for (std::size_t k = 0; k < b.points.size() && k < 6; ++k) pts += (k ? "," : "") + c.label(b.points[k]);
+    for (std::size_t k = 0; k < b.points.size() && k < 6; ++k) pts += (k ? "," : "") + dot_escape(c.label(b.points[k]));
     if (b.points.size() > 6) pts += ",...";
-    os << "  b" << i << " [label=" << dot_quote(b.name + "\\n" + pts)
+    os << "  b" << i << " [label=" << dot_quote(dot_escape(b.name) + "\\n" + pts)
        << ", shape=" << (b.origin == Body_origin::IMPLIED ? "box" : "ellipse")
        << (i == t.root ? ", peripheries=2" : "")
        << (in_cover[i] ? ", style=filled, fillcolor=\"#cfe3ff\"" : ", style=dashed, color=gray40") << "];\n";
@@ -59,7 +63,7 @@ void write_overlap_graph_dot(std::ostream& os, const Rigid_body_collection<Trait
     std::size_t a = boost::source(e, g), b = boost::target(e, g);
     bool tree = (t.parent.size() > b && t.parent[b] == a) || (t.parent.size() > a && t.parent[a] == b);
     std::string shared;
-    for (std::size_t p : g[e].shared) shared += (shared.empty() ? "" : ",") + c.label(p);
+    for (std::size_t p : g[e].shared) shared += (shared.empty() ? "" : ",") + dot_escape(c.label(p));
     os << "  b" << a << " -- b" << b << " [label=" << dot_quote(std::to_string(g[e].weight) + " (" + shared + ")")
        << (tree ? ", penwidth=3, color=\"#c0392b\"" : ", color=gray50") << "];\n";
   }

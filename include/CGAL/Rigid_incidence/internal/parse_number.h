@@ -72,8 +72,11 @@ inline bool parse_decimal(const std::string& s, CGAL::Gmpq& q, std::string& why)
 // rational "p/q" with integer p and q != 0. On failure returns false and sets why.
 inline bool parse_exact_number(const std::string& text, CGAL::Gmpq& q, std::string& why)
 {
-  std::string s;
-  for (char c : text) if (!std::isspace(static_cast<unsigned char>(c))) s += c;
+  // surrounding white space is allowed, white space inside a number is not
+  std::size_t first = 0, last = text.size();
+  while (first < last && std::isspace(static_cast<unsigned char>(text[first]))) ++first;
+  while (last > first && std::isspace(static_cast<unsigned char>(text[last - 1]))) --last;
+  std::string s = text.substr(first, last - first);
   if (s.empty()) { why = "empty number"; return false; }
   std::string lower;
   for (char c : s) lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
