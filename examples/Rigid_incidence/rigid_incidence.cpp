@@ -82,6 +82,18 @@ int analyze(const Options& o)
   // and fixes one: 6(k-1) for the k bodies the user wrote.
   const long naive = 6 * (long(scene.bodies.size()) - 1);
   auto name = [&](std::size_t b) { return c.body(b).name; };
+  // placements of each body up to rigid motion (mirror images, hinge angles)
+  std::vector<std::size_t> placements(c.number_of_bodies(), 1);
+  for (std::size_t i = 0; i < c.number_of_bodies(); ++i) {
+    if (c.body(i).mirror_variants > 0) { placements[i] = std::size_t(c.body(i).mirror_variants); continue; }
+    try {
+      placements[i] = RI::enclose_all_placements<CGAL::Interval_nt<false>>(c, i).size();
+    } catch (const RI::Input_error& e) {
+      throw RI::Input_error(o.scene + ": " + e.what());
+    }
+    if (placements[i] == 0)
+      throw RI::Input_error(o.scene + ": body '" + c.body(i).name + "': its distances admit no real placement");
+  }
   auto labels = [&](const std::vector<std::size_t>& pts) {
     std::vector<std::string> l;
     for (std::size_t p : pts) l.push_back(c.label(p));
@@ -102,7 +114,7 @@ int analyze(const Options& o)
     for (std::size_t i = 0; i < c.number_of_bodies(); ++i) {
       const auto& b = c.body(i);
       nlohmann::ordered_json jb = {{"name", b.name}, {"origin", RI::to_string(b.origin)}, {"points", labels(b.points)},
-                                   {"sources", b.sources}, {"mirror_variants", b.mirror_variants}};
+                                   {"sources", b.sources}, {"placements", placements[i]}};
       bodies.push_back(jb);
       if (b.origin == RI::Body_origin::IMPLIED) implied.push_back(jb);
     }
@@ -148,7 +160,9 @@ int analyze(const Options& o)
     const auto& b = c.body(i);
     std::cout << "  " << b.name << " [" << RI::to_string(b.origin) << "]:";
     for (auto l : labels(b.points)) std::cout << " " << l;
-    if (b.mirror_variants > 1) std::cout << "  (fixed up to a mirror image: 2 variants)";
+    if (placements[i] > 1)
+      std::cout << "  (" << placements[i] << " placements: its distances fix it only up to "
+                << (b.mirror_variants == 2 ? "a mirror image)" : "a discrete choice)");
     std::cout << "\n";
   }
   for (const auto& d : c.distances())

@@ -69,6 +69,18 @@ public:
     FT squared;      ///< the squared distance
   };
 
+  /// The orientation of four points of a body (local indices): the sign of
+  /// det(b - a, c - a, d - a). It keeps the handedness of a user body whose points entered
+  /// another body as distances, so that a placement cannot bring it back mirrored.
+  struct Orientation
+  {
+    std::size_t a;      ///< first point
+    std::size_t b;      ///< second point
+    std::size_t c;      ///< third point
+    std::size_t d;      ///< fourth point
+    CGAL::Sign sign;    ///< POSITIVE or NEGATIVE
+  };
+
   /// A rigid body of the collection: its points (global indices) and what fixes them.
   struct Body
   {
@@ -79,7 +91,12 @@ public:
     std::vector<Squared_distance> squared_distances; ///< local indices; pairs not both with coordinates
     Body_origin origin = Body_origin::USER; ///< where the body comes from
     std::vector<std::string> sources;       ///< user bodies and distances this body stands for
-    int mirror_variants = 1;                ///< 2 if its distances fix it only up to a mirror image
+    std::vector<Orientation> orientations;  ///< handedness of points without coordinates (see `Orientation`)
+    /// Placements up to rigid motion that `standardize()` can tell exactly: 1 when every point
+    /// has coordinates, 2 for an implied body spanning space (mirror images), 1 for a planar
+    /// one; 0 when coordinates and distances are combined and the placements must be
+    /// enumerated (see `enclose_all_placements()`).
+    int mirror_variants = 1;
 
     /// Local index of global point `p`, or `npos`.
     std::size_t local(std::size_t p) const
@@ -207,6 +224,8 @@ public:
   }
   /// The name of the frame body: the one named by `set_frame()`, else the first body.
   std::string frame() const { return frame_.empty() && !bodies_.empty() ? bodies_.front().name : frame_; }
+  /// `true` if the frame was named with `set_frame()` (else it is the first body).
+  bool frame_is_explicit() const { return !frame_.empty(); }
 
   std::string name;  ///< the scene's name, for reports
 
@@ -217,7 +236,7 @@ public:
     if constexpr (Traits::has_exact_ft) return x == y;
     else {
       double a = CGAL::to_double(x), b = CGAL::to_double(y);
-      double scale = (std::max)({1.0, std::abs(a), std::abs(b)});
+      double scale = (std::max)(std::abs(a), std::abs(b)); // relative at every scale
       return std::abs(a - b) <= consistency_tolerance * scale;
     }
   }

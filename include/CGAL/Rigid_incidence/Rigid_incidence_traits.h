@@ -79,7 +79,9 @@ struct Rigid_incidence_traits
       double d = CGAL::to_double(q);
       std::ostringstream os;
       os.precision(6);
-      if (std::isfinite(d)) os << d; else os << (q < 0 ? "-" : "") << "a number beyond 1e308";
+      if (d == 0) os << "a nonzero number below 1e-308 in magnitude";
+      else if (std::isfinite(d)) os << d;
+      else os << (q < 0 ? "-" : "") << "a number beyond 1e308";
       throw Input_error(where + ": " + os.str() +
                         " is outside the range this kernel's double coordinates handle (1e-50 <= |x| <= 1e50, or 0);"
                         " use an exact kernel");

@@ -33,8 +33,11 @@ template <class IT>
 struct Body_enclosure
 {
   std::vector<std::array<IT, 3>> coordinates; ///< per point of the body (its `points` order)
-  bool consistent = true; ///< every distance the body knows lies in the enclosure of its placement
-  int variant = 0;        ///< which mirror image (0 or 1) was placed
+  /// every distance the body knows lies in the enclosure of its placement (false: the body
+  /// admits no placement, and `coordinates` is empty)
+  bool consistent = true;
+  int variant = 0;        ///< which placement this is (see `enclose_all_placements()`)
+  bool in_given_frame = true; ///< in the frame of the body's coordinates (else a canonical frame)
 };
 
 namespace internal {
@@ -99,116 +102,253 @@ template <class IT> IT nonnegative(const IT& x)
 
 } // namespace internal
 
+namespace internal {
+
+template <class IT, class Traits>
+class Placer
+{
+  typedef std::array<IT, 3> P;
+  typedef typename Traits::FT FT;
+  typedef Rigid_body_collection<Traits> Collection;
+  typedef typename Collection::Body Body;
+
+public:
+  Placer(const Collection& c, const Body& b, std::size_t max_placements)
+    : c_(c), b_(b), m_(b.points.size()), max_(max_placements) {}
+
+  // All placements: start from the points with coordinates if they alone let every point be
+  // placed, else (or if there are none) from a triangle of distances in a canonical frame, in
+  // which case the coordinates given for some points enter as distances and orientations.
+  std::vector<Body_enclosure<IT>> run()
+  {
+    Rounding_guard<IT> protect;
+    // table of known squared distances (local indices); coordinates give them too
+    known_.assign(m_, std::vector<std::optional<FT>>(m_));
+    for (std::size_t i = 0; i < m_; ++i)
+      for (std::size_t j = i + 1; j < m_; ++j) known_[i][j] = known_[j][i] = b_.squared(i, j);
+    std::vector<P> coords(m_, P{IT(0), IT(0), IT(0)});
+    std::vector<bool> placed(m_, false);
+    std::size_t given = 0;
+    for (std::size_t i = 0; i < m_; ++i)
+      if (b_.has_coordinates[i]) {
+        coords[i] = P{enclose<IT>(Traits::x(b_.coordinates[i])), enclose<IT>(Traits::y(b_.coordinates[i])),
+                      enclose<IT>(Traits::z(b_.coordinates[i]))};
+        placed[i] = true;
+        ++given;
+      }
+    in_given_frame_ = given >= 3 && reachable(placed);
+    if (!in_given_frame_) {
+      // canonical frame; the given coordinates keep their handedness through an orientation
+      extra_orientations();
+      std::fill(placed.begin(), placed.end(), false);
+      std::optional<std::array<std::size_t, 3>> base;
+      for (std::size_t i = 0; i < m_ && !base; ++i) for (std::size_t j = i + 1; j < m_ && !base; ++j)
+        for (std::size_t k = j + 1; k < m_ && !base; ++k)
+          if (known_[i][j] && known_[i][k] && known_[j][k] &&
+              CGAL::sign(triangle_16_area_squared(*known_[i][j], *known_[i][k], *known_[j][k])) == CGAL::POSITIVE) {
+            std::vector<bool> trial(m_, false);
+            trial[i] = trial[j] = trial[k] = true;
+            if (reachable(trial)) base = std::array<std::size_t, 3>{i, j, k};
+          }
+      if (!base)
+        throw Input_error("body '" + b_.name + "': its points cannot be placed one after the other from three placed"
+                          " points at known distances (a placement this version does not support)");
+      auto [i, j, k] = *base;
+      IT d01 = enclose<IT>(*known_[i][j]), d02 = enclose<IT>(*known_[i][k]), d12 = enclose<IT>(*known_[j][k]);
+      IT l = CGAL::sqrt(d01);
+      IT x = (d01 + d02 - d12) / (IT(2) * l);
+      IT y = CGAL::sqrt(nonnegative(d02 - x * x));
+      coords[i] = P{IT(0), IT(0), IT(0)};
+      coords[j] = P{l, IT(0), IT(0)};
+      coords[k] = P{x, y, IT(0)};
+      placed[i] = placed[j] = placed[k] = true;
+    }
+    place(coords, placed);
+    return out_;
+  }
+
+private:
+  const Collection& c_;
+  const Body& b_;
+  std::size_t m_, max_;
+  std::vector<std::vector<std::optional<FT>>> known_;
+  std::vector<std::array<std::size_t, 4>> orient_idx_;
+  std::vector<CGAL::Sign> orient_sign_;
+  bool in_given_frame_ = false;
+  std::vector<Body_enclosure<IT>> out_;
+
+  // Can every point be placed by repeated trilateration from the `placed` ones?
+  bool reachable(std::vector<bool> placed) const
+  {
+    bool progress = true;
+    while (progress) {
+      progress = false;
+      for (std::size_t p = 0; p < m_; ++p)
+        if (!placed[p] && reference_triangle(p, placed)) { placed[p] = true; progress = true; }
+    }
+    return std::all_of(placed.begin(), placed.end(), [](bool x) { return x; });
+  }
+
+  std::optional<std::array<std::size_t, 3>> reference_triangle(std::size_t p, const std::vector<bool>& placed) const
+  {
+    std::vector<std::size_t> refs;
+    for (std::size_t q = 0; q < m_; ++q) if (placed[q] && known_[p][q]) refs.push_back(q);
+    for (std::size_t a = 0; a < refs.size(); ++a) for (std::size_t b = a + 1; b < refs.size(); ++b)
+      for (std::size_t c = b + 1; c < refs.size(); ++c) {
+        const auto& x = known_[refs[a]][refs[b]]; const auto& y = known_[refs[a]][refs[c]]; const auto& z = known_[refs[b]][refs[c]];
+        if (x && y && z && CGAL::sign(triangle_16_area_squared(*x, *y, *z)) == CGAL::POSITIVE)
+          return std::array<std::size_t, 3>{refs[a], refs[b], refs[c]};
+      }
+    return std::nullopt;
+  }
+
+  // In a canonical frame the coordinates given for four points spanning space fix their handedness.
+  void extra_orientations()
+  {
+    for (const auto& o : b_.orientations) { orient_idx_.push_back({o.a, o.b, o.c, o.d}); orient_sign_.push_back(o.sign); }
+    std::vector<std::size_t> idx;
+    for (std::size_t k = 0; k < m_; ++k) if (b_.has_coordinates[k]) idx.push_back(k);
+    for (std::size_t a = 0; a < idx.size(); ++a) for (std::size_t bb = a + 1; bb < idx.size(); ++bb)
+      for (std::size_t cc = bb + 1; cc < idx.size(); ++cc) for (std::size_t dd = cc + 1; dd < idx.size(); ++dd) {
+        const auto& A = b_.coordinates[idx[a]]; const auto& B = b_.coordinates[idx[bb]];
+        const auto& C = b_.coordinates[idx[cc]]; const auto& D = b_.coordinates[idx[dd]];
+        FT u[3] = {Traits::x(B) - Traits::x(A), Traits::y(B) - Traits::y(A), Traits::z(B) - Traits::z(A)};
+        FT v[3] = {Traits::x(C) - Traits::x(A), Traits::y(C) - Traits::y(A), Traits::z(C) - Traits::z(A)};
+        FT w[3] = {Traits::x(D) - Traits::x(A), Traits::y(D) - Traits::y(A), Traits::z(D) - Traits::z(A)};
+        CGAL::Sign s = CGAL::sign(u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) +
+                                  u[2] * (v[0] * w[1] - v[1] * w[0]));
+        if (s != CGAL::ZERO) { orient_idx_.push_back({idx[a], idx[bb], idx[cc], idx[dd]}); orient_sign_.push_back(s); return; }
+      }
+  }
+
+  // Does the placement certainly violate an orientation whose four points are placed?
+  bool violates_orientation(const std::vector<P>& x, const std::vector<bool>& placed) const
+  {
+    for (std::size_t k = 0; k < orient_idx_.size(); ++k) {
+      const auto& o = orient_idx_[k];
+      if (!(placed[o[0]] && placed[o[1]] && placed[o[2]] && placed[o[3]])) continue;
+      IT det = dot(cross(sub(x[o[1]], x[o[0]]), sub(x[o[2]], x[o[0]])), sub(x[o[3]], x[o[0]]));
+      typename CGAL::Interval_traits<IT>::Lower lower;
+      typename CGAL::Interval_traits<IT>::Upper upper;
+      if (orient_sign_[k] == CGAL::POSITIVE && upper(det) < 0) return true;
+      if (orient_sign_[k] == CGAL::NEGATIVE && lower(det) > 0) return true;
+    }
+    return false;
+  }
+
+  // Is every known distance between placed points (one of them p) contained in its enclosure?
+  bool fits(std::size_t p, const P& xp, const std::vector<P>& x, const std::vector<bool>& placed) const
+  {
+    for (std::size_t q = 0; q < m_; ++q)
+      if (placed[q] && q != p && known_[p][q]) {
+        P d = sub(xp, x[q]);
+        if (!internal::overlap(dot(d, d), enclose<IT>(*known_[p][q]))) return false;
+      }
+    return true;
+  }
+
+  // Depth first over the sides of each trilaterated point: a side is kept when it fits every
+  // known distance and orientation so far; both are kept when both fit.
+  void place(std::vector<P> x, std::vector<bool> placed)
+  {
+    if (out_.size() >= max_) return;
+    std::size_t next = m_;
+    std::optional<std::array<std::size_t, 3>> tri;
+    for (std::size_t p = 0; p < m_ && next == m_; ++p)
+      if (!placed[p]) { tri = reference_triangle(p, placed); if (tri) next = p; }
+    if (next == m_) {
+      Body_enclosure<IT> e;
+      e.coordinates = x;
+      e.variant = int(out_.size());
+      e.in_given_frame = in_given_frame_;
+      e.consistent = true;
+      out_.push_back(e);
+      return;
+    }
+    const std::size_t p = next;
+    const P& P1 = x[(*tri)[0]];
+    P u = sub(x[(*tri)[1]], P1), v = sub(x[(*tri)[2]], P1);
+    P n = cross(u, v);
+    IT r1 = enclose<IT>(*known_[p][(*tri)[0]]), r2 = enclose<IT>(*known_[p][(*tri)[1]]), r3 = enclose<IT>(*known_[p][(*tri)[2]]);
+    IT uu = dot(u, u), vv = dot(v, v), uv = dot(u, v), nn = dot(n, n);
+    IT alpha = (r1 - r2 + uu) / IT(2), beta = (r1 - r3 + vv) / IT(2);
+    // X - P1 = a u + b v + t n with a uu + b uv = alpha, a uv + b vv = beta (determinant nn)
+    IT a = (alpha * vv - beta * uv) / nn, bcoef = (beta * uu - alpha * uv) / nn;
+    P w{a * u[0] + bcoef * v[0], a * u[1] + bcoef * v[1], a * u[2] + bcoef * v[2]};
+    IT t = CGAL::sqrt(nonnegative((r1 - dot(w, w)) / nn));
+    typename CGAL::Interval_traits<IT>::Lower lower;
+    bool on_plane = !(lower(t) > 0); // t may be 0: one side only
+    for (int side : {1, -1}) {
+      if (side < 0 && on_plane) break;
+      P xp{P1[0] + w[0] + IT(side) * t * n[0], P1[1] + w[1] + IT(side) * t * n[1], P1[2] + w[2] + IT(side) * t * n[2]};
+      if (!fits(p, xp, x, placed)) continue;
+      std::vector<P> x2 = x;
+      std::vector<bool> placed2 = placed;
+      x2[p] = xp;
+      placed2[p] = true;
+      if (violates_orientation(x2, placed2)) continue;
+      place(x2, placed2);
+    }
+  }
+};
+
+} // namespace internal
+
 /*!
 \ingroup PkgRigidIncidenceRef
-\brief Encloses the local coordinates of body `body` of `c` in intervals of type `IT`.
+\brief Encloses every placement of body `body` of `c` (up to rigid motion) in intervals of type `IT`.
 
-Points with exact coordinates are enclosed as given. A body known only by distances is
-placed from them: its first point at the origin, the second on the x axis, the third in the
-xy plane (y > 0), each further point by trilateration from three placed non-collinear points,
-its side of their plane chosen by `variant` (0: positive, 1: the mirror image) for the first
-point that has two sides and by a known distance to a fourth point for the others.
-Each square root and division is evaluated in interval arithmetic with outward rounding,
-so the enclosures contain the exact coordinates of the placement.
+Points with coordinates are enclosed as given, in the body's frame, when every other point
+can be placed from them; otherwise the body is placed in a canonical frame from its
+distances: a first point at the origin, a second on the x axis, a third in the xy plane
+(y > 0), and the given coordinates enter as distances and an orientation (so that a user
+body never comes back mirrored). Each further point is trilaterated from three placed
+non-collinear points at known distances; both sides of their plane are followed whenever both
+fit every known distance and orientation so far, so the placements returned are all those
+the body's distances allow (a spatial clique of distances gives its two mirror images; two
+bodies on a hinge closed by a distance give the hinge's two angles). Square roots and
+divisions are evaluated with outward rounding, so each enclosure contains the exact
+coordinates of its placement; where intervals cannot tell two sides apart (a point nearly
+on the plane of its references) both are returned, never neither.
 
 \tparam IT `CGAL::Interval_nt<false>` (double intervals), or `CGAL::Gmpfi` (MPFI: the exact
 input values are rounded outward at `Gmpfi`'s default precision, which a caller raises with
 `CGAL::Gmpfi::set_default_precision()` to make the enclosures as tight as asked).
-\throws Input_error if the body's known distances do not suffice to place a point.
+\param max_placements stop after this many placements.
+\throws Input_error if the body's distances do not let its points be placed one after the other.
+*/
+template <class IT, class Traits>
+std::vector<Body_enclosure<IT>> enclose_all_placements(const Rigid_body_collection<Traits>& c, std::size_t body,
+                                                       std::size_t max_placements = 64)
+{
+  internal::Placer<IT, Traits> placer(c, c.body(body), max_placements);
+  return placer.run();
+}
+
+/*!
+\ingroup PkgRigidIncidenceRef
+\brief The placement number `variant` of `enclose_all_placements()` (0: the first).
+
+For a body whose points all have coordinates, there is one placement: its coordinates.
+For a spatial clique of distances, variants 0 and 1 are mirror images.
+\throws Input_error if the body has no such placement, with the number it has.
 */
 template <class IT, class Traits>
 Body_enclosure<IT> enclose_coordinates(const Rigid_body_collection<Traits>& c, std::size_t body, int variant = 0)
 {
-  typedef std::array<IT, 3> P;
-  typedef typename Traits::FT FT;
-  const auto& b = c.body(body);
-  const std::size_t m = b.points.size();
-  internal::Rounding_guard<IT> protect;
-  Body_enclosure<IT> out;
-  out.variant = variant;
-  out.coordinates.assign(m, P{IT(0), IT(0), IT(0)});
-  std::vector<bool> placed(m, false);
-  auto sq = [&](std::size_t i, std::size_t j) { return b.squared(i, j); };
-  for (std::size_t i = 0; i < m; ++i)
-    if (b.has_coordinates[i]) {
-      out.coordinates[i] = P{internal::enclose<IT>(Traits::x(b.coordinates[i])), internal::enclose<IT>(Traits::y(b.coordinates[i])),
-                             internal::enclose<IT>(Traits::z(b.coordinates[i]))};
-      placed[i] = true;
+  std::vector<Body_enclosure<IT>> all = enclose_all_placements<IT>(c, body, std::size_t(variant) + 1);
+  if (variant < 0 || std::size_t(variant) >= all.size()) {
+    // the body's distances admit no placement (or fewer): report it as inconsistent
+    if (all.empty()) {
+      Body_enclosure<IT> e;
+      e.consistent = false;
+      e.variant = variant;
+      return e;
     }
-  std::size_t n_placed = std::count(placed.begin(), placed.end(), true);
-  if (n_placed == 0) {
-    // base triangle from distances
-    std::optional<std::array<std::size_t, 3>> base;
-    for (std::size_t i = 0; i < m && !base; ++i) for (std::size_t j = i + 1; j < m && !base; ++j)
-      for (std::size_t k = j + 1; k < m && !base; ++k) {
-        auto a = sq(i, j), bb = sq(i, k), cc = sq(j, k);
-        if (a && bb && cc && CGAL::sign(internal::triangle_16_area_squared(*a, *bb, *cc)) == CGAL::POSITIVE)
-          base = std::array<std::size_t, 3>{i, j, k};
-      }
-    if (!base) throw Input_error("body '" + b.name + "': its distances contain no proper triangle to place it from");
-    auto [i, j, k] = *base;
-    IT d01 = internal::enclose<IT>(*sq(i, j)), d02 = internal::enclose<IT>(*sq(i, k)), d12 = internal::enclose<IT>(*sq(j, k));
-    IT l = CGAL::sqrt(d01);
-    IT x = (d01 + d02 - d12) / (IT(2) * l);
-    IT y = CGAL::sqrt(internal::nonnegative(d02 - x * x));
-    out.coordinates[i] = P{IT(0), IT(0), IT(0)};
-    out.coordinates[j] = P{l, IT(0), IT(0)};
-    out.coordinates[k] = P{x, y, IT(0)};
-    placed[i] = placed[j] = placed[k] = true;
+    throw Input_error("body '" + c.body(body).name + "' has " + std::to_string(all.size()) + " placement(s), not a number " +
+                      std::to_string(variant + 1));
   }
-  bool progress = true;
-  while (progress) {
-    progress = false;
-    for (std::size_t p = 0; p < m; ++p) {
-      if (placed[p]) continue;
-      // three placed points, non-collinear, at known distances from p
-      std::vector<std::size_t> refs;
-      for (std::size_t q = 0; q < m; ++q) if (placed[q] && sq(p, q)) refs.push_back(q);
-      std::optional<std::array<std::size_t, 3>> tri;
-      for (std::size_t a = 0; a < refs.size() && !tri; ++a) for (std::size_t bb = a + 1; bb < refs.size() && !tri; ++bb)
-        for (std::size_t cc = bb + 1; cc < refs.size() && !tri; ++cc) {
-          auto x = sq(refs[a], refs[bb]), y = sq(refs[a], refs[cc]), z = sq(refs[bb], refs[cc]);
-          if (x && y && z && CGAL::sign(internal::triangle_16_area_squared(*x, *y, *z)) == CGAL::POSITIVE)
-            tri = std::array<std::size_t, 3>{refs[a], refs[bb], refs[cc]};
-        }
-      if (!tri) continue;
-      const P& P1 = out.coordinates[(*tri)[0]];
-      P u = internal::sub(out.coordinates[(*tri)[1]], P1), v = internal::sub(out.coordinates[(*tri)[2]], P1);
-      P n = internal::cross(u, v);
-      IT r1 = internal::enclose<IT>(*sq(p, (*tri)[0])), r2 = internal::enclose<IT>(*sq(p, (*tri)[1])),
-         r3 = internal::enclose<IT>(*sq(p, (*tri)[2]));
-      IT uu = internal::dot(u, u), vv = internal::dot(v, v), uv = internal::dot(u, v), nn = internal::dot(n, n);
-      IT alpha = (r1 - r2 + uu) / IT(2), beta = (r1 - r3 + vv) / IT(2);
-      // (X - P1) = a u + b v + t n with a uu + b uv = alpha, a uv + b vv = beta (det = nn)
-      IT a = (alpha * vv - beta * uv) / nn, bcoef = (beta * uu - alpha * uv) / nn;
-      P w{a * u[0] + bcoef * v[0], a * u[1] + bcoef * v[1], a * u[2] + bcoef * v[2]};
-      IT t = CGAL::sqrt(internal::nonnegative((r1 - internal::dot(w, w)) / nn));
-      P plus{P1[0] + w[0] + t * n[0], P1[1] + w[1] + t * n[1], P1[2] + w[2] + t * n[2]};
-      P minus{P1[0] + w[0] - t * n[0], P1[1] + w[1] - t * n[1], P1[2] + w[2] - t * n[2]};
-      // choose the side: by a fourth point at known distance if one tells, else by `variant`
-      int side = 0; // +1 plus, -1 minus
-      for (std::size_t q : refs) {
-        if (q == (*tri)[0] || q == (*tri)[1] || q == (*tri)[2]) continue;
-        IT known = internal::enclose<IT>(*sq(p, q));
-        P dp = internal::sub(plus, out.coordinates[q]), dm = internal::sub(minus, out.coordinates[q]);
-        bool fits_plus = internal::overlap(internal::dot(dp, dp), known);
-        bool fits_minus = internal::overlap(internal::dot(dm, dm), known);
-        if (fits_plus != fits_minus) { side = fits_plus ? 1 : -1; break; }
-      }
-      if (side == 0) side = (variant == 0) ? 1 : -1;
-      out.coordinates[p] = side > 0 ? plus : minus;
-      placed[p] = true;
-      progress = true;
-    }
-  }
-  for (std::size_t p = 0; p < m; ++p)
-    if (!placed[p]) throw Input_error("body '" + b.name + "': point '" + c.label(b.points[p]) +
-                                      "' has too few known distances to be placed");
-  for (const auto& d : b.squared_distances) {
-    P diff = internal::sub(out.coordinates[d.a], out.coordinates[d.b]);
-    if (!internal::overlap(internal::dot(diff, diff), internal::enclose<IT>(FT(d.squared)))) out.consistent = false;
-  }
-  return out;
+  return all[std::size_t(variant)];
 }
 
 } // namespace Rigid_incidence

@@ -357,6 +357,7 @@ private:
         return trees <= opt_.max_trees;
       });
     }
+    if (trees > opt_.max_trees) capped = true; // the last candidate's enumeration may have stopped too
     if (capped) { t.ties_complete = false; t.proven_optimal = false;
       t.strategy += "; the tie and depth-sum enumeration was capped: not proven optimal on the depth sum"; }
     t.trees_examined = trees;

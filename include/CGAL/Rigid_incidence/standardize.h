@@ -64,15 +64,18 @@ class Standardizer
   typedef typename Collection::Body Body;
   typedef typename Collection::Distance Distance;
   typedef typename Collection::Squared_distance Squared_distance;
+  typedef typename Collection::Orientation Orientation;
   typedef typename Traits::FT FT;
   typedef typename Traits::Point_3 Point_3;
 
 public:
-  Standardizer(const Collection& in, std::vector<std::string>* log) : c_(in), log_(log), frame_name_(in.frame()) {}
+  Standardizer(const Collection& in, std::vector<std::string>* log)
+    : c_(in), log_(log), frame_name_(in.frame()), frame_explicit_(in.frame_is_explicit()) {}
 
   Collection run()
   {
     turn_collinear_bodies_into_bars();
+    check_shared_pairs();
     std::size_t guard = 0, limit = 8 * (c_.number_of_bodies() + c_.distances().size()) + 16;
     bool changed = true;
     while (changed) {
@@ -84,6 +87,7 @@ public:
       if (changed) continue;
       changed = add_implied_bodies();
     }
+    check_shared_pairs();
     // The frame passes to the body that absorbed or merged the frame body; that body keeps
     // the frame body's coordinates (see merge_one_pair and absorb_bodies).
     if (!frame_name_.empty() && c_.body_index(frame_name_) == Collection::npos)
@@ -100,6 +104,7 @@ private:
   Collection c_;
   std::vector<std::string>* log_;
   std::string frame_name_; // the user body whose local frame results are reported in
+  bool frame_explicit_;
   std::size_t implied_count_ = 0, merged_count_ = 0;
 
   void note(const std::string& s) { if (log_) log_->push_back(s); }
@@ -109,31 +114,51 @@ private:
     if (std::find(b.sources.begin(), b.sources.end(), s) == b.sources.end()) b.sources.push_back(s);
   }
 
-  // A body whose points are all collinear is a bar: it fixes only its pairwise distances
-  // (5 dof, not 6), so it enters as distances.
+  // A body of two points is a bar: it fixes one distance (5 dof, not 6) and enters as that
+  // distance. Three or more collinear points make a degenerate body that the papers' tree
+  // parametrization does not cover: rejected with a clear message.
   void turn_collinear_bodies_into_bars()
   {
     auto& bodies = c_.mutable_bodies();
-    std::vector<Body> kept;
-    std::vector<Body> bars;
+    std::vector<Body> kept, bars;
     for (const Body& b : bodies) {
       bool collinear = true;
       for (std::size_t i = 2; i < b.points.size() && collinear; ++i)
         collinear = Traits::collinear(b.coordinates[0], b.coordinates[1], b.coordinates[i]);
-      if (collinear) bars.push_back(b); else kept.push_back(b);
+      if (!collinear) { kept.push_back(b); continue; }
+      if (b.points.size() > 2)
+        throw Input_error("body '" + b.name + "': its " + std::to_string(b.points.size()) +
+                          " points are collinear; a collinear rigid body (5 dof) is not supported: give its two end points"
+                          " as a distance, or add a point off the line");
+      if (b.name == frame_name_ && frame_explicit_)
+        throw Input_error("body '" + b.name + "' is the scene's frame but has only 2 points: a bar has no frame of its"
+                          " own; name another body as \"frame\"");
+      bars.push_back(b);
     }
     bodies = kept;
-    for (const Body& b : bars) {
-      if (b.name == frame_name_)
-        throw Input_error("body '" + b.name + "' is the scene's frame but has all its points on one line: a bar has no frame"
-                          " of its own; name another body as \"frame\"");
-      note("body '" + b.name + "' has all its points on one line: it is a bar and enters as distances");
-      for (std::size_t i = 0; i < b.points.size(); ++i)
-        for (std::size_t j = i + 1; j < b.points.size(); ++j)
-          c_.add_distance(c_.label(b.points[i]), c_.label(b.points[j]),
-                          Traits::squared_distance(b.coordinates[i], b.coordinates[j]),
-                          "body '" + b.name + "' (a bar)");
+    if (bodies.empty())
+      throw Input_error("the scene has no rigid body of 3 or more non-collinear points (only bars): nothing to assemble");
+    if (!frame_explicit_ && c_.body_index(frame_name_) == Collection::npos) {
+      frame_name_ = bodies.front().name; // the default frame: the first body that is not a bar
+      c_.set_frame(frame_name_);
     }
+    for (const Body& b : bars) {
+      note("body '" + b.name + "' has 2 points: it is a bar and enters as their distance");
+      c_.add_distance(c_.label(b.points[0]), c_.label(b.points[1]), Traits::squared_distance(b.coordinates[0], b.coordinates[1]),
+                      "body '" + b.name + "' (a bar)");
+    }
+  }
+
+  // Two bodies sharing two or more points must agree on their distances (a shared pair seen
+  // with two lengths has no configuration).
+  void check_shared_pairs() const
+  {
+    const auto& bodies = c_.bodies();
+    for (std::size_t i = 0; i < bodies.size(); ++i)
+      for (std::size_t j = i + 1; j < bodies.size(); ++j) {
+        std::vector<std::size_t> common = c_.common_points(i, j);
+        if (common.size() >= 2) check_agreement(bodies[i], bodies[j], common);
+      }
   }
 
   bool absorb_distances()
@@ -180,53 +205,140 @@ private:
         if (!std::includes(big.points.begin(), big.points.end(), small.points.begin(), small.points.end())) continue;
         if (small.points.size() == big.points.size() && i < j) continue; // absorb the later of two equal sets
         check_agreement(small, big, small.points);
-        std::vector<Point_3> reframed;
-        if (small.all_coordinates() && big.all_coordinates()) {
-          // distances agree; a rotation must superpose them too (not a mirror image)
-          auto dm = distance_matrix(small, nullptr, small.points);
-          auto base = non_collinear_triple(dm);
-          if (base) {
-            std::vector<Point_3> images = map_into(small, big, small.points, *base);
-            if (holds_frame(small)) reframed = images; // keep the scene's frame
-          }
-        }
         note("body '" + small.name + "' lies inside body '" + big.name + "' and is absorbed");
-        Body& host = bodies[j];
-        for (const auto& s : small.sources) add_source(host, s);
-        if (!reframed.empty()) {
-          host.coordinates = reframed;
-          note("body '" + host.name + "' is expressed in the frame of '" + frame_name_ + "', the scene's frame");
-        }
-        adopt_coordinates(host, small);
-        host.mirror_variants = std::max(host.mirror_variants, host.all_coordinates() ? 1 : small.mirror_variants);
+        Body host = primary_first(big, small) ? combine(big, small) : combine(small, big);
+        host.name = big.name;
+        host.origin = big.origin;
+        bodies[j] = host;
         bodies.erase(bodies.begin() + i);
         return true;
       }
     return false;
   }
 
-  // A body known by distances only that absorbs a body with coordinates takes them over:
-  // exact coordinates are worth keeping (no square root is needed to place those points).
-  void adopt_coordinates(Body& host, const Body& small) const
+  // Which of two bodies to combine keeps its frame: the one holding the scene's frame if it
+  // has coordinates, else the one with more points with coordinates (ties: the first).
+  bool primary_first(const Body& a, const Body& b) const
   {
-    if (!small.all_coordinates() || std::any_of(host.has_coordinates.begin(), host.has_coordinates.end(), [](bool b) { return b; }))
-      return;
-    std::vector<Squared_distance> kept;
-    for (std::size_t k = 0; k < small.points.size(); ++k) {
-      std::size_t h = host.local(small.points[k]);
-      host.has_coordinates[h] = true;
-      host.coordinates[h] = small.coordinates[k];
+    auto count = [](const Body& x) { return std::count(x.has_coordinates.begin(), x.has_coordinates.end(), true); };
+    if (holds_frame(a) && count(a) > 0) return true;
+    if (holds_frame(b) && count(b) > 0) return false;
+    return count(a) >= count(b);
+  }
+
+  // Four points with coordinates of `b` spanning space (local indices), if any.
+  static std::optional<std::array<std::size_t, 4>> spanning_quadruple(const Body& b)
+  {
+    std::vector<std::size_t> idx;
+    for (std::size_t k = 0; k < b.points.size(); ++k) if (b.has_coordinates[k]) idx.push_back(k);
+    if (idx.size() < 4) return std::nullopt;
+    std::size_t a = idx[0], bb = idx[1];
+    for (std::size_t c : idx) {
+      if (c == a || c == bb || Traits::collinear(b.coordinates[a], b.coordinates[bb], b.coordinates[c])) continue;
+      for (std::size_t d : idx) {
+        if (d == a || d == bb || d == c) continue;
+        if (orientation_sign(b.coordinates[a], b.coordinates[bb], b.coordinates[c], b.coordinates[d]) != CGAL::ZERO)
+          return std::array<std::size_t, 4>{a, bb, c, d};
+      }
+      return std::nullopt; // all coplanar with a, bb, c
     }
-    for (const auto& d : host.squared_distances)
-      if (!(host.has_coordinates[d.a] && host.has_coordinates[d.b])) kept.push_back(d);
-    host.squared_distances = kept;
-    // The points placed from distances relative to the adopted ones have one placement if
-    // the adopted points span space, else two (mirror images in their plane).
-    std::vector<std::vector<FT>> dm(small.points.size(), std::vector<FT>(small.points.size(), FT(0)));
-    for (std::size_t u = 0; u < small.points.size(); ++u)
-      for (std::size_t v = u + 1; v < small.points.size(); ++v) dm[u][v] = dm[v][u] = *small.squared(u, v);
-    bool all_adopted = host.all_coordinates();
-    if (all_adopted || spans_space(dm)) host.mirror_variants = 1;
+    return std::nullopt;
+  }
+
+  static CGAL::Sign orientation_sign(const Point_3& a, const Point_3& b, const Point_3& c, const Point_3& d)
+  {
+    FT u[3] = {Traits::x(b) - Traits::x(a), Traits::y(b) - Traits::y(a), Traits::z(b) - Traits::z(a)};
+    FT v[3] = {Traits::x(c) - Traits::x(a), Traits::y(c) - Traits::y(a), Traits::z(c) - Traits::z(a)};
+    FT w[3] = {Traits::x(d) - Traits::x(a), Traits::y(d) - Traits::y(a), Traits::z(d) - Traits::z(a)};
+    return CGAL::sign(u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) + u[2] * (v[0] * w[1] - v[1] * w[0]));
+  }
+
+  // The union of two bodies, in the frame of P. The points of O with coordinates join P's
+  // frame when three non-collinear points have coordinates in both (a rational rigid map);
+  // otherwise they enter as their pairwise distances plus the orientation of four of them
+  // (so that no user body can come back mirrored). Every distance either body knows is kept.
+  Body combine(const Body& P, const Body& O) const
+  {
+    Body m;
+    m.name = P.name;
+    m.origin = P.origin;
+    m.sources = P.sources;
+    for (const auto& src : O.sources) add_source(m, src);
+    std::set_union(P.points.begin(), P.points.end(), O.points.begin(), O.points.end(), std::back_inserter(m.points));
+    m.has_coordinates.assign(m.points.size(), false);
+    m.coordinates.assign(m.points.size(), Point_3(0, 0, 0));
+    for (std::size_t k = 0; k < P.points.size(); ++k)
+      if (P.has_coordinates[k]) {
+        std::size_t h = m.local(P.points[k]);
+        m.has_coordinates[h] = true;
+        m.coordinates[h] = P.coordinates[k];
+      }
+    // points with coordinates on both sides
+    std::vector<std::size_t> both;
+    for (std::size_t k = 0; k < O.points.size(); ++k)
+      if (O.has_coordinates[k] && P.contains(O.points[k]) && P.has_coordinates[P.local(O.points[k])]) both.push_back(O.points[k]);
+    std::optional<std::array<std::size_t, 3>> base;
+    for (std::size_t a = 0; a < both.size() && !base; ++a)
+      for (std::size_t b = a + 1; b < both.size() && !base; ++b)
+        for (std::size_t c = b + 1; c < both.size() && !base; ++c)
+          if (!Traits::collinear(P.coordinates[P.local(both[a])], P.coordinates[P.local(both[b])], P.coordinates[P.local(both[c])]))
+            base = std::array<std::size_t, 3>{a, b, c};
+    bool mapped = false;
+    if (base) {
+      std::vector<std::optional<Point_3>> images = map_into(P, O, both, *base);
+      for (std::size_t k = 0; k < O.points.size(); ++k)
+        if (images[k]) {
+          std::size_t h = m.local(O.points[k]);
+          if (!m.has_coordinates[h]) { m.has_coordinates[h] = true; m.coordinates[h] = *images[k]; }
+        }
+      mapped = true;
+    }
+    auto add_distance = [&](std::size_t gu, std::size_t gv, const FT& d) {
+      std::size_t mu = m.local(gu), mv = m.local(gv);
+      if (m.has_coordinates[mu] && m.has_coordinates[mv]) {
+        FT known = Traits::squared_distance(m.coordinates[mu], m.coordinates[mv]);
+        if (!c_.same_value(known, d))
+          throw Input_error("bodies '" + P.name + "' and '" + O.name + "' disagree on the distance of '" + c_.label(gu) +
+                            "' and '" + c_.label(gv) + "' (squared " + to_text(known) + " vs " + to_text(d) + ")");
+        return;
+      }
+      for (const auto& s : m.squared_distances)
+        if ((s.a == mu && s.b == mv) || (s.a == mv && s.b == mu)) {
+          if (!c_.same_value(s.squared, d))
+            throw Input_error("bodies '" + P.name + "' and '" + O.name + "' disagree on the distance of '" + c_.label(gu) +
+                              "' and '" + c_.label(gv) + "' (squared " + to_text(s.squared) + " vs " + to_text(d) + ")");
+          return;
+        }
+      m.squared_distances.push_back(Squared_distance{mu, mv, d});
+    };
+    for (const Body* b : {&P, &O})
+      for (std::size_t u = 0; u < b->points.size(); ++u)
+        for (std::size_t v = u + 1; v < b->points.size(); ++v) {
+          auto d = b->squared(u, v);
+          if (d) add_distance(b->points[u], b->points[v], *d);
+        }
+    for (const Body* b : {&P, &O})
+      for (const auto& o : b->orientations)
+        m.orientations.push_back(Orientation{m.local(b->points[o.a]), m.local(b->points[o.b]), m.local(b->points[o.c]),
+                                             m.local(b->points[o.d]), o.sign});
+    if (!mapped) {
+      if (auto q = spanning_quadruple(O))
+        m.orientations.push_back(Orientation{m.local(O.points[(*q)[0]]), m.local(O.points[(*q)[1]]), m.local(O.points[(*q)[2]]),
+                                             m.local(O.points[(*q)[3]]),
+                                             orientation_sign(O.coordinates[(*q)[0]], O.coordinates[(*q)[1]],
+                                                              O.coordinates[(*q)[2]], O.coordinates[(*q)[3]])});
+    }
+    // orientations now fully inside the coordinates are implied by them
+    std::vector<Orientation> kept;
+    for (const auto& o : m.orientations)
+      if (!(m.has_coordinates[o.a] && m.has_coordinates[o.b] && m.has_coordinates[o.c] && m.has_coordinates[o.d])) kept.push_back(o);
+    m.orientations = kept;
+    std::vector<Squared_distance> kd;
+    for (const auto& d : m.squared_distances)
+      if (!(m.has_coordinates[d.a] && m.has_coordinates[d.b])) kd.push_back(d);
+    m.squared_distances = kd;
+    m.mirror_variants = m.all_coordinates() ? 1 : 0; // 0: enumerate with enclose_all_placements()
+    return m;
   }
 
   // Every pairwise distance both bodies know among `pts` must agree.
@@ -272,9 +384,7 @@ private:
           throw Input_error("bodies '" + bodies[i].name + "' and '" + bodies[j].name + "' share " + std::to_string(common.size()) +
                             " collinear points (" + labels_of(c_, common) +
                             "): they share only an axis, which must be given by exactly 2 shared points");
-        // the merged body keeps the coordinates (the frame) of the body holding the scene's frame
-        bool swap = holds_frame(bodies[j]) && bodies[j].all_coordinates();
-        Body merged = swap ? merge(bodies[j], bodies[i], common, *base, dm) : merge(bodies[i], bodies[j], common, *base, dm);
+        Body merged = merge(bodies[i], bodies[j]);
         note("bodies '" + bodies[i].name + "' and '" + bodies[j].name + "' share " + std::to_string(common.size()) +
              " non-collinear points (" + labels_of(c_, common) + ") and are merged into '" + merged.name + "'");
         bodies.erase(bodies.begin() + j);
@@ -306,14 +416,16 @@ private:
     return false;
   }
 
-  // The images in A's frame of all of B's points, under the rigid motion taking B's frame to
-  // A's: the rotation maps the frame (u, v, u x v) of three shared points in B to the same
-  // frame in A, M = [u1 v1 w1] [u2 v2 w2]^{-1}. It is rational (no square root: exact with an
-  // exact kernel). Throws if a shared point does not land on itself (mirror images).
-  std::vector<Point_3> map_into(const Body& A, const Body& B, const std::vector<std::size_t>& common,
-                                const std::array<std::size_t, 3>& base) const
+  // The images in A's frame of B's points with coordinates, under the rigid motion taking
+  // B's frame to A's: the rotation maps the frame (u, v, u x v) of three shared points in B
+  // to the same frame in A, M = [u1 v1 w1] [u2 v2 w2]^{-1}. It is rational (no square root:
+  // exact with an exact kernel). `shared` are global points with coordinates in both, `base`
+  // indexes three non-collinear ones. Throws if a shared point does not land on itself
+  // (mirror images).
+  std::vector<std::optional<Point_3>> map_into(const Body& A, const Body& B, const std::vector<std::size_t>& shared,
+                                               const std::array<std::size_t, 3>& base) const
   {
-    std::size_t pa = common[base[0]], pb = common[base[1]], pc = common[base[2]];
+    std::size_t pa = shared[base[0]], pb = shared[base[1]], pc = shared[base[2]];
     const Point_3 a1 = A.coordinates[A.local(pa)], b1 = A.coordinates[A.local(pb)], c1 = A.coordinates[A.local(pc)];
     const Point_3 a2 = B.coordinates[B.local(pa)], b2 = B.coordinates[B.local(pb)], c2 = B.coordinates[B.local(pc)];
     auto diff = [](const Point_3& p, const Point_3& q) {
@@ -340,18 +452,20 @@ private:
     FT M[3][3];
     for (int r = 0; r < 3; ++r)
       for (int k = 0; k < 3; ++k) M[r][k] = T[r][0] * inv[0][k] + T[r][1] * inv[1][k] + T[r][2] * inv[2][k];
-    std::vector<Point_3> images;
-    for (const Point_3& p : B.coordinates) {
+    std::vector<std::optional<Point_3>> images(B.points.size());
+    for (std::size_t k = 0; k < B.points.size(); ++k) {
+      if (!B.has_coordinates[k]) continue;
+      const Point_3& p = B.coordinates[k];
       FT d[3] = {Traits::x(p) - Traits::x(a2), Traits::y(p) - Traits::y(a2), Traits::z(p) - Traits::z(a2)};
-      images.push_back(Traits::point(Traits::x(a1) + M[0][0] * d[0] + M[0][1] * d[1] + M[0][2] * d[2],
-                                     Traits::y(a1) + M[1][0] * d[0] + M[1][1] * d[1] + M[1][2] * d[2],
-                                     Traits::z(a1) + M[2][0] * d[0] + M[2][1] * d[1] + M[2][2] * d[2]));
+      images[k] = Traits::point(Traits::x(a1) + M[0][0] * d[0] + M[0][1] * d[1] + M[0][2] * d[2],
+                                Traits::y(a1) + M[1][0] * d[0] + M[1][1] * d[1] + M[1][2] * d[2],
+                                Traits::z(a1) + M[2][0] * d[0] + M[2][1] * d[1] + M[2][2] * d[2]);
     }
     const FT scale = Traits::squared_distance(a1, b1); // a mismatch is measured against the shared frame's size
-    for (std::size_t p : common) {
-      FT d2 = Traits::squared_distance(images[B.local(p)], A.coordinates[A.local(p)]);
+    for (std::size_t p : shared) {
+      FT d2 = Traits::squared_distance(*images[B.local(p)], A.coordinates[A.local(p)]);
       if (!c_.same_value(d2 + scale, scale))
-        throw Input_error("bodies '" + A.name + "' and '" + B.name + "' share points " + labels_of(c_, common) +
+        throw Input_error("bodies '" + A.name + "' and '" + B.name + "' share points " + labels_of(c_, shared) +
                           " whose pairwise distances agree but which no rotation superposes (point '" + c_.label(p) +
                           "'): one body holds the mirror image of the other");
     }
@@ -363,54 +477,11 @@ private:
     return std::find(b.sources.begin(), b.sources.end(), frame_name_) != b.sources.end();
   }
 
-  Body merge(const Body& A, const Body& B, const std::vector<std::size_t>& common,
-             const std::array<std::size_t, 3>& base, const std::vector<std::vector<FT>>& dm)
+  Body merge(const Body& A, const Body& B)
   {
-    Body m;
+    Body m = primary_first(A, B) ? combine(A, B) : combine(B, A);
     m.name = "merged" + std::to_string(++merged_count_) + "(" + A.name + "+" + B.name + ")";
     m.origin = Body_origin::MERGED;
-    m.sources = A.sources;
-    for (const auto& src : B.sources) add_source(m, src);
-    std::set_union(A.points.begin(), A.points.end(), B.points.begin(), B.points.end(), std::back_inserter(m.points));
-    m.has_coordinates.assign(m.points.size(), false);
-    m.coordinates.assign(m.points.size(), Point_3(0, 0, 0));
-    if (A.all_coordinates() && B.all_coordinates()) {
-      std::vector<Point_3> images = map_into(A, B, common, base);
-      for (std::size_t k = 0; k < m.points.size(); ++k) {
-        std::size_t p = m.points[k];
-        m.coordinates[k] = A.contains(p) ? A.coordinates[A.local(p)] : images[B.local(p)];
-        m.has_coordinates[k] = true;
-      }
-      return m;
-    }
-    // At least one of them is known by distances only: keep the coordinates of one body that
-    // has them all, and carry every pairwise distance the two bodies know.
-    const Body* with = A.all_coordinates() ? &A : (B.all_coordinates() ? &B : nullptr);
-    const Body* other = (with == &A) ? &B : &A;
-    for (std::size_t k = 0; k < m.points.size(); ++k)
-      if (with && with->contains(m.points[k])) {
-        m.has_coordinates[k] = true;
-        m.coordinates[k] = with->coordinates[with->local(m.points[k])];
-      }
-    for (const Body* b : {&A, &B})
-      for (std::size_t u = 0; u < b->points.size(); ++u)
-        for (std::size_t v = u + 1; v < b->points.size(); ++v) {
-          std::size_t mu = m.local(b->points[u]), mv = m.local(b->points[v]);
-          if (m.has_coordinates[mu] && m.has_coordinates[mv]) continue;
-          auto d = b->squared(u, v);
-          if (!d) continue;
-          bool dup = false;
-          for (const auto& s : m.squared_distances)
-            if ((s.a == mu && s.b == mv) || (s.a == mv && s.b == mu)) dup = true;
-          if (!dup) m.squared_distances.push_back(Squared_distance{mu, mv, *d});
-        }
-    // Placed from three or more coplanar points, the other body's points have two mirror
-    // placements; from four points spanning space they have one.
-    bool other_has_more = other->points.size() > common.size();
-    int mv = (with && (spans_space(dm) || !other_has_more)) ? 1 : 2;
-    if (!with) mv = std::max(A.mirror_variants, B.mirror_variants);
-    m.mirror_variants = std::max(mv, with ? with->mirror_variants : 1);
-    (void)base;
     return m;
   }
 
@@ -429,7 +500,7 @@ private:
     for (const Distance& d : ds) relevant[d.a] = relevant[d.b] = true;
     std::vector<std::size_t> ids, vertex_of(c_.number_of_points(), Collection::npos);
     for (std::size_t p = 0; p < relevant.size(); ++p) if (relevant[p]) { vertex_of[p] = ids.size(); ids.push_back(p); }
-    if (ids.size() < 3 || ds.empty()) return false; // without a distance no clique leaves the bodies
+    if (ids.size() < 3) return false;
     typedef boost::adjacency_list<boost::setS, boost::vecS, boost::undirectedS> Graph;
     Graph g(ids.size());
     for (const Body& b : bodies)
@@ -517,7 +588,7 @@ private:
     std::sort(sources.begin(), sources.end());
     sources.erase(std::unique(sources.begin(), sources.end()), sources.end());
     b.sources = sources;
-    b.mirror_variants = spatial ? 2 : 1;
+    b.mirror_variants = spatial ? 2 : 1; // a clique of distances: its mirror image satisfies them too
     note(who + " is added as body '" + b.name + "' (from " + [&] { std::string s; for (std::size_t i = 0; i < sources.size(); ++i) s += (i ? ", " : "") + sources[i]; return s; }() + ")");
     c_.mutable_bodies().push_back(b);
   }

@@ -71,6 +71,8 @@ public:
   bool parse_error(std::size_t position, const std::string&, const nlohmann::detail::exception& ex)
   {
     error = "invalid JSON at byte " + std::to_string(position) + ": " + ex.what();
+    if (std::string(ex.what()).find("number overflow") != std::string::npos)
+      error += " (a plain JSON number must fit a double; write larger numbers as strings, e.g. \"1e400\")";
     return false;
   }
 

@@ -21,8 +21,8 @@ namespace internal {
 // Exponents beyond this are refused: 10^1e9 would exhaust memory, and no scene needs it.
 constexpr long max_decimal_exponent = 4000;
 
-// Parses an optionally signed decimal "[-+]digits[.digits][(e|E)[-+]digits]" (at least one
-// digit in the mantissa) into q. On failure returns false and sets why.
+// Parses an optionally signed decimal "[-+]digits[.digits][(e|E)[-+]digits]" into q (as in
+// JSON, digits on both sides of a decimal point). On failure returns false and sets why.
 inline bool parse_decimal(const std::string& s, CGAL::Gmpq& q, std::string& why)
 {
   std::size_t i = 0, n = s.size();
@@ -32,11 +32,12 @@ inline bool parse_decimal(const std::string& s, CGAL::Gmpq& q, std::string& why)
   long frac_digits = 0;
   std::size_t mantissa_digits = 0;
   while (i < n && std::isdigit(static_cast<unsigned char>(s[i]))) { digits += s[i++]; ++mantissa_digits; }
+  if (mantissa_digits == 0) { why = "no digits before the decimal point"; return false; }
   if (i < n && s[i] == '.') {
     ++i;
     while (i < n && std::isdigit(static_cast<unsigned char>(s[i]))) { digits += s[i++]; ++frac_digits; ++mantissa_digits; }
+    if (frac_digits == 0) { why = "no digits after the decimal point"; return false; }
   }
-  if (mantissa_digits == 0) { why = "no digits"; return false; }
   long exponent = 0;
   if (i < n && (s[i] == 'e' || s[i] == 'E')) {
     ++i;

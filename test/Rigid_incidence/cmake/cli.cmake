@@ -1,0 +1,199 @@
+# Copyright (c) 2026 Rigid_incidence contributors.
+# SPDX-License-Identifier: LGPL-3.0-or-later
+#
+# Tests of the command-line tool `rigid_incidence` (each runs cli/run_cli.cmake, which runs the
+# tool and checks its exit status and output):
+#  - cli_malformed_<case>: every file of data/malformed/ is refused with exit status 2 and a
+#    message "rigid_incidence: error: <file>: ..." naming the fault (regexes of the table below,
+#    separated by "&&", all must match standard error);
+#  - cli_help, cli_usage_*: --help lists every command and option; usage errors exit 1;
+#  - cli_json_<scene>_<kernel>: `analyze SCENE --json` prints JSON checked by cli_json_check
+#    (structure, self-consistency, and the paper's numbers for tetra, tetra_i, quad, pent);
+#  - cli_dot: --dot FILE writes a Graphviz file "graph overlap ...";
+#  - cli_scene_<scene>_<kernel>: every shipped scene analyzes with exit 0 under every kernel.
+# The files of data/malformed/ are written by `test_read_scene --write-malformed DIR`, which
+# prints this table.
+
+if(TARGET rigid_incidence)
+  set(_ri_cli_script ${CMAKE_CURRENT_LIST_DIR}/../cli/run_cli.cmake)
+  set(_ri_malformed_dir ${CMAKE_CURRENT_LIST_DIR}/../data/malformed)
+  set(_ri_tool $<TARGET_FILE:rigid_incidence>)
+
+  # case  regexes on standard error (besides the file name)
+  set(_ri_malformed_table
+  json_empty "invalid JSON"
+  json_whitespace_only "invalid JSON"
+  json_truncated "invalid JSON"
+  json_truncated_in_number "invalid JSON"
+  json_trailing_garbage "invalid JSON"
+  json_trailing_brace "invalid JSON"
+  json_two_values "invalid JSON"
+  json_missing_comma "invalid JSON"
+  json_trailing_comma "invalid JSON"
+  json_single_quotes "invalid JSON"
+  json_unterminated_string "invalid JSON"
+  json_comment "invalid JSON"
+  json_bare_word "invalid JSON"
+  json_nan_literal "invalid JSON"
+  json_infinity_literal "invalid JSON"
+  json_control_char_in_string "invalid JSON"
+  json_deep_arrays "(nest|deep)"
+  json_deep_inside_scene "(nest|deep)"
+  top_level_array "object"
+  format_unknown "format&&rigid-incidence-scene/2"
+  format_missing "format"
+  format_not_string "format"
+  format_duplicate "format&&duplicate"
+  unknown_top_field "bodys"
+  unsupported_inequalities "inequalities"
+  unknown_body_field "colour&&('c2'|bodies.1.)"
+  unknown_distance_field "weight&&distances.0."
+  bodies_missing "bodies"
+  bodies_empty "bodies"
+  bodies_not_array "bodies"
+  body_missing_name "bodies.1.&&name"
+  body_empty_name "(bodies.1.|body '')&&name"
+  body_points_missing "'c2'&&points"
+  body_points_array "'c2'&&points"
+  coordinates_missing "'c2'&&'D'&&coordinate"
+  coordinates_null "'c2'&&'D'"
+  coordinates_object "'c2'&&'D'"
+  coordinates_two "'c2'&&'D'&&coordinate"
+  coordinates_four "'c2'&&'D'&&coordinate"
+  coordinate_non_numeric "'c2'&&'D'&&coordinate y"
+  coordinate_boolean "'c2'&&'D'&&coordinate z"
+  coordinate_null "'c2'&&'D'&&coordinate x"
+  coordinate_array "'c2'&&'D'&&coordinate x"
+  coordinate_empty_string "'c2'&&'D'&&coordinate x"
+  coordinate_nan "'c2'&&'D'&&coordinate x&&NaN"
+  coordinate_nan_lowercase "'c2'&&'D'&&coordinate y&&NaN"
+  coordinate_inf "'c2'&&'D'&&coordinate z&&infinite"
+  coordinate_minus_infinity "'c2'&&'D'&&coordinate x&&infinite"
+  coordinate_huge_exponent "'c2'&&'D'&&coordinate x&&exponent"
+  coordinate_hex "'c2'&&'D'&&coordinate x"
+  coordinate_zero_denominator "'c2'&&'D'&&coordinate x"
+  coordinate_inner_space "'c2'&&'D'&&coordinate x"
+  coordinate_trailing_point "'c2'&&'D'&&coordinate x"
+  body_duplicate_name "'c1'&&duplicate"
+  label_duplicate "'c2'&&'A'&&duplicate"
+  label_empty "'c2'&&label"
+  body_one_point "'c2'&&2 points"
+  body_no_points "'c2'&&2 points"
+  points_coincident "'c2'&&'D'&&'E'&&coincide"
+  points_coincident_rational_decimal "'c2'&&'D'&&'E'&&coincide"
+  points_coincident_plain_number "'c2'&&'D'&&'E'&&coincide"
+  distance_unknown_label "distances.0.&&'Z'"
+  distance_squared_negative "distances.0.&&squared&&positive"
+  distance_squared_zero "distances.0.&&squared&&positive"
+  distance_squared_zero_rational "distances.0.&&squared&&positive"
+  distance_length_negative "distances.0.&&length&&positive"
+  distance_length_zero "distances.0.&&length&&positive"
+  distance_nan "distances.0.&&squared&&NaN"
+  distance_infinite "distances.0.&&length&&infinite"
+  distance_non_numeric "distances.0.&&squared"
+  distance_same_point "distances.0.&&'B'"
+  distance_both_values "distances.0.&&squared&&length"
+  distance_no_value "distances.0.&&(squared|length)"
+  distance_one_label "distances.0.&&between"
+  distance_labels_not_strings "distances.0.&&between"
+  distance_disagree "distances.1.&&distances.0.&&'B'&&'D'"
+  distance_disagree_reversed "distances.1.&&distances.0.&&'B'&&'D'"
+  frame_unknown "frame&&c9"
+  frame_not_string "frame"
+  distance_inside_body_disagrees "'c1'&&'B'&&'C'&&distances.0."
+  shared_points_disagree_subset "'c1'&&'c2'&&'A'&&'B'"
+  shared_points_disagree_merge "'c1'&&'c2'&&'A'&&'B'"
+  shared_points_disagree_two "'c1'&&'c2'&&'A'&&'B'"
+  shared_collinear_points "'c1'&&'c2'&&collinear"
+  mirror_bodies "'c1'&&'c2'&&mirror"
+  mirror_body_inside "'c1'&&'c2'&&mirror"
+  implied_triangle_inequality "'A'&&'B'&&'C'&&triangle"
+  implied_triangle_degenerate "'A'&&'B'&&'C'"
+  )
+
+  list(LENGTH _ri_malformed_table _n)
+  math(EXPR _last "${_n} - 1")
+  foreach(_i RANGE 0 ${_last} 2)
+    math(EXPR _j "${_i} + 1")
+    list(GET _ri_malformed_table ${_i} _case)
+    list(GET _ri_malformed_table ${_j} _rx)
+    set(_file ${_ri_malformed_dir}/${_case}.json) # a missing file fails its test ("cannot open")
+    add_test(NAME cli_malformed_${_case}
+             COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=analyze|${_file}" -DEXPECT_RC=2
+                     "-DEXPECT_STDERR=^rigid_incidence: error: [^\n]*${_case}\\.json: &&${_rx}" -P ${_ri_cli_script})
+  endforeach()
+  # every file of the directory must be in the table: a file without a line gets a failing test
+  file(GLOB _files RELATIVE ${_ri_malformed_dir} ${_ri_malformed_dir}/*.json)
+  foreach(_f ${_files})
+    string(REGEX REPLACE "\\.json$" "" _case ${_f})
+    list(FIND _ri_malformed_table ${_case} _at)
+    if(_at EQUAL -1)
+      message(WARNING "cli.cmake: data/malformed/${_f} has no line in the table")
+      add_test(NAME cli_malformed_${_case}_not_in_table COMMAND ${CMAKE_COMMAND} -E false)
+    endif()
+  endforeach()
+
+  # --- usage
+  add_test(NAME cli_help COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=--help" -DEXPECT_RC=0
+           "-DEXPECT_STDOUT=analyze&&--json&&--dot&&--kernel&&exact&&epick&&epeck&&--help" -P ${_ri_cli_script})
+  add_test(NAME cli_help_after_analyze COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=analyze|--help" -DEXPECT_RC=0
+           "-DEXPECT_STDOUT=analyze&&--json&&--dot&&--kernel" -P ${_ri_cli_script})
+  add_test(NAME cli_usage_no_arguments COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=" -DEXPECT_RC=1
+           "-DEXPECT_STDERR=analyze" -P ${_ri_cli_script})
+  add_test(NAME cli_usage_unknown_option
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=analyze|${RIGID_INCIDENCE_DATA_DIR}/tetra.json|--frobnicate"
+                   -DEXPECT_RC=1 "-DEXPECT_STDERR=--frobnicate" -P ${_ri_cli_script})
+  add_test(NAME cli_usage_unknown_command COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=analyse|x.json" -DEXPECT_RC=1
+           "-DEXPECT_STDERR=analyse" -P ${_ri_cli_script})
+  add_test(NAME cli_usage_unknown_kernel
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=analyze|${RIGID_INCIDENCE_DATA_DIR}/tetra.json|--kernel|float"
+                   -DEXPECT_RC=1 "-DEXPECT_STDERR=float" -P ${_ri_cli_script})
+  add_test(NAME cli_usage_kernel_without_value
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=analyze|${RIGID_INCIDENCE_DATA_DIR}/tetra.json|--kernel"
+                   -DEXPECT_RC=1 "-DEXPECT_STDERR=--kernel" -P ${_ri_cli_script})
+  add_test(NAME cli_usage_no_scene COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=analyze|--json" -DEXPECT_RC=1
+           -P ${_ri_cli_script})
+  add_test(NAME cli_usage_two_scenes
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}"
+                   "-DARGS=analyze|${RIGID_INCIDENCE_DATA_DIR}/tetra.json|${RIGID_INCIDENCE_DATA_DIR}/quad.json"
+                   -DEXPECT_RC=1 "-DEXPECT_STDERR=quad.json" -P ${_ri_cli_script})
+  add_test(NAME cli_missing_file
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=analyze|${CMAKE_CURRENT_BINARY_DIR}/no_such_scene.json"
+                   -DEXPECT_RC=2 "-DEXPECT_STDERR=^rigid_incidence: error: [^\n]*no_such_scene\\.json" -P ${_ri_cli_script})
+
+  # --- --json, checked by a small program
+  add_executable(cli_json_check ${CMAKE_CURRENT_LIST_DIR}/../cli_json_check.cpp)
+  target_link_libraries(cli_json_check PRIVATE nlohmann_json::nlohmann_json)
+  set(_ri_expect_tetra "--bodies|7|--implied|4|--weight|3|--depth-sum|3|--root|I1{P12,P23,P31}|--reduced|3|--naive|12|--covering|4")
+  # naive_variables = 6(k-1) over the k bodies of the scene (3 for tetra: 12), as the tool defines
+  # it since commit f92bedc; over the covering set (Section 4.2 of the paper) it would be 18.
+  set(_ri_expect_tetra_i "${_ri_expect_tetra}")
+  set(_ri_expect_quad "--bodies|9|--weight|4|--depth-sum|4|--root|c5|--reduced|4|--naive|24")
+  set(_ri_expect_pent "--bodies|6|--weight|4|--depth-sum|6|--root|c5|--ties|6|--reduced|4|--naive|24")
+
+  file(GLOB _scenes ${RIGID_INCIDENCE_DATA_DIR}/*.json)
+  foreach(_scene ${_scenes})
+    get_filename_component(_s ${_scene} NAME_WE)
+    foreach(_k exact epick epeck)
+      add_test(NAME cli_scene_${_s}_${_k}
+               COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=analyze|${_scene}|--kernel|${_k}" -DEXPECT_RC=0
+                       "-DEXPECT_STDOUT=optimal incidence tree" -P ${_ri_cli_script})
+      set(_expect "")
+      if(DEFINED _ri_expect_${_s})
+        set(_expect "|${_ri_expect_${_s}}")
+      endif()
+      add_test(NAME cli_json_${_s}_${_k}
+               COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=analyze|${_scene}|--kernel|${_k}|--json" -DEXPECT_RC=0
+                       "-DSTDOUT_FILE=${CMAKE_CURRENT_BINARY_DIR}/cli_json_${_s}_${_k}.json"
+                       "-DCHECK_PROGRAM=$<TARGET_FILE:cli_json_check>" "-DCHECK_ARGS=STDOUT_FILE${_expect}"
+                       -P ${_ri_cli_script})
+    endforeach()
+  endforeach()
+
+  # --- --dot FILE
+  add_test(NAME cli_dot
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}"
+                   "-DARGS=analyze|${RIGID_INCIDENCE_DATA_DIR}/tetra.json|--dot|${CMAKE_CURRENT_BINARY_DIR}/cli_tetra.dot"
+                   -DEXPECT_RC=0 "-DCHECK_FILE=${CMAKE_CURRENT_BINARY_DIR}/cli_tetra.dot"
+                   "-DCHECK_FILE_REGEX=^graph overlap&&c1&&I1{P12,P23,P31}&&}[ \t\r\n]*$" -P ${_ri_cli_script})
+endif()
