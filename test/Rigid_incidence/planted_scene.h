@@ -15,6 +15,7 @@
 #include <CGAL/Interval_nt.h>
 #include <CGAL/Random.h>
 #include <CGAL/Rigid_incidence/Rigid_body_collection.h>
+#include <CGAL/Rigid_incidence/enclose_coordinates.h>
 
 #include <algorithm>
 #include <array>
@@ -429,6 +430,16 @@ inline QI enclosed_orientation(const IP& a, const IP& b, const IP& c, const IP& 
 inline bool contains_point(const IP& a, const QP& p)
 { return contains(qi(a[0]), p.x) && contains(qi(a[1]), p.y) && contains(qi(a[2]), p.z); }
 
+} // namespace planted
+
+namespace planted {
+// Placements of body i up to rigid motion: what standardize() tells exactly, else enumerated.
+template <class Traits>
+std::size_t placements(const CGAL::Rigid_incidence::Rigid_body_collection<Traits>& c, std::size_t i)
+{
+  if (c.body(i).mirror_variants > 0) return std::size_t(c.body(i).mirror_variants);
+  return CGAL::Rigid_incidence::enclose_all_placements<CGAL::Interval_nt<false>>(c, i).size();
+}
 } // namespace planted
 
 #endif

@@ -100,7 +100,8 @@ void check_body(const std::string& cs, const Scene& s, const RI::Rigid_body_coll
 
   bool some_variant_is_planted = false;
   std::vector<int> first_orientation;
-  for (int v = 0; v < b.mirror_variants; ++v) {
+  const int n_placements = int(placements(c, i));
+  for (int v = 0; v < n_placements; ++v) {
     RI::Body_enclosure<IT> e;
     try {
       e = RI::enclose_coordinates<IT>(c, i, v);
@@ -111,8 +112,18 @@ void check_body(const std::string& cs, const Scene& s, const RI::Rigid_body_coll
     if (stats) ++stats->placements;
     CHECK(e.variant == v && e.coordinates.size() == m, k << ": variant or size of the enclosure wrong");
     CHECK(e.consistent, k << " variant " << v << ": not consistent");
-    // given coordinates come back as point intervals (to_interval of the exact value)
-    for (std::size_t u = 0; u < m; ++u) {
+    // given coordinates come back as point intervals (to_interval of the exact value) when the
+    // placement is in the body's frame; a body that cannot be placed from its given points alone
+    // is placed in a canonical frame (in_given_frame false), its given points kept by distances
+    // and orientation (checked below through the planted distances and handedness)
+    bool given_frame_possible = false;
+    {
+      std::size_t given = 0;
+      for (std::size_t u = 0; u < m; ++u) given += b.has_coordinates[u];
+      given_frame_possible = given == m; // with every point given, the placement must be the given one
+    }
+    if (given_frame_possible) CHECK(e.in_given_frame, k << ": a body with all coordinates placed in a canonical frame");
+    for (std::size_t u = 0; u < m && e.in_given_frame; ++u) {
       if (!b.has_coordinates[u]) continue;
       const auto& p = b.coordinates[u];
       std::pair<double, double> w[3] = {CGAL::to_interval(p.x()), CGAL::to_interval(p.y()), CGAL::to_interval(p.z())};
@@ -164,7 +175,7 @@ void check_body(const std::string& cs, const Scene& s, const RI::Rigid_body_coll
                 k << ": variant 1 is not the mirror image of variant 0 (orientation " << q << ")");
     }
   }
-  CHECK(some_variant_is_planted, k << ": no variant (of " << b.mirror_variants << ") is the planted configuration");
+  CHECK(some_variant_is_planted, k << ": no variant (of " << n_placements << ") is the planted configuration");
   if (stats) ++stats->bodies;
 }
 

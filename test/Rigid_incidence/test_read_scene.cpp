@@ -440,17 +440,14 @@ void accepted_scenes(const char* kernel)
     }
   }
   {
+    // nlohmann-json's lexer refuses a plain JSON number beyond the range of a double before
+    // the SAX interface sees its text: the scene is refused with a hint to quote it.
     auto o = run<Traits>(with_c2(R"("A": ["0","0","0"], "D": [1e400, 0, 0])"), "mem/big_exponent.json");
-    if constexpr (Traits::has_exact_ft) {
-      CHECK(o.stage == DONE, K << "plain 1e400 (valid JSON, exponent within the limit) refused: " << o.message);
-      if (o.stage == DONE) {
-        const auto* d = scene_point(o.scene, "c2", "D");
-        CHECK(d && d->x == CGAL::Gmpq(pow10(400)), K << "plain 1e400 not read as 10^400");
-      }
-    } else {
-      // epick cannot hold 10^400: either refused with a message naming the point, or accepted
-      CHECK(o.stage == DONE || o.message.find("mem/big_exponent.json") != std::string::npos, K << "1e400: " << o.message);
-    }
+    CHECK(o.stage != DONE && !o.foreign_exception, K << "plain 1e400 accepted");
+    CHECK(o.message.find("mem/big_exponent.json") != std::string::npos, K << "1e400: no source in " << o.message);
+    CHECK(o.message.find("as strings") != std::string::npos, K << "1e400: no hint to quote it in " << o.message);
+    auto q = run<Traits>(with_c2(R"("A": ["0","0","0"], "D": ["1e40", 0, 0])"), "mem/quoted_exponent.json");
+    CHECK(q.stage == DONE, K << "quoted 1e40 refused: " << q.message);
   }
   // ---- length vs squared
   {

@@ -136,6 +136,7 @@ public:
         placed[i] = true;
         ++given;
       }
+    for (const auto& o : b_.orientations) { orient_idx_.push_back({o.a, o.b, o.c, o.d}); orient_sign_.push_back(o.sign); }
     in_given_frame_ = given >= 3 && reachable(placed);
     if (!in_given_frame_) {
       // canonical frame; the given coordinates keep their handedness through an orientation
@@ -145,7 +146,7 @@ public:
       for (std::size_t i = 0; i < m_ && !base; ++i) for (std::size_t j = i + 1; j < m_ && !base; ++j)
         for (std::size_t k = j + 1; k < m_ && !base; ++k)
           if (known_[i][j] && known_[i][k] && known_[j][k] &&
-              CGAL::sign(triangle_16_area_squared(*known_[i][j], *known_[i][k], *known_[j][k])) == CGAL::POSITIVE) {
+              triangle_sign<Traits::has_exact_ft>(*known_[i][j], *known_[i][k], *known_[j][k]) == CGAL::POSITIVE) {
             std::vector<bool> trial(m_, false);
             trial[i] = trial[j] = trial[k] = true;
             if (reachable(trial)) base = std::array<std::size_t, 3>{i, j, k};
@@ -196,7 +197,7 @@ private:
     for (std::size_t a = 0; a < refs.size(); ++a) for (std::size_t b = a + 1; b < refs.size(); ++b)
       for (std::size_t c = b + 1; c < refs.size(); ++c) {
         const auto& x = known_[refs[a]][refs[b]]; const auto& y = known_[refs[a]][refs[c]]; const auto& z = known_[refs[b]][refs[c]];
-        if (x && y && z && CGAL::sign(triangle_16_area_squared(*x, *y, *z)) == CGAL::POSITIVE)
+        if (x && y && z && triangle_sign<Traits::has_exact_ft>(*x, *y, *z) == CGAL::POSITIVE)
           return std::array<std::size_t, 3>{refs[a], refs[b], refs[c]};
       }
     return std::nullopt;
@@ -205,7 +206,6 @@ private:
   // In a canonical frame the coordinates given for four points spanning space fix their handedness.
   void extra_orientations()
   {
-    for (const auto& o : b_.orientations) { orient_idx_.push_back({o.a, o.b, o.c, o.d}); orient_sign_.push_back(o.sign); }
     std::vector<std::size_t> idx;
     for (std::size_t k = 0; k < m_; ++k) if (b_.has_coordinates[k]) idx.push_back(k);
     for (std::size_t a = 0; a < idx.size(); ++a) for (std::size_t bb = a + 1; bb < idx.size(); ++bb)
@@ -314,7 +314,9 @@ on the plane of its references) both are returned, never neither.
 \tparam IT `CGAL::Interval_nt<false>` (double intervals), or `CGAL::Gmpfi` (MPFI: the exact
 input values are rounded outward at `Gmpfi`'s default precision, which a caller raises with
 `CGAL::Gmpfi::set_default_precision()` to make the enclosures as tight as asked).
-\param max_placements stop after this many placements.
+\param c the collection (typically the output of `standardize()`)
+\param body the index of the body in `c`
+\param max_placements stop after this many placements
 \throws Input_error if the body's distances do not let its points be placed one after the other.
 */
 template <class IT, class Traits>
@@ -331,7 +333,11 @@ std::vector<Body_enclosure<IT>> enclose_all_placements(const Rigid_body_collecti
 
 For a body whose points all have coordinates, there is one placement: its coordinates.
 For a spatial clique of distances, variants 0 and 1 are mirror images.
-\throws Input_error if the body has no such placement, with the number it has.
+\param c the collection
+\param body the index of the body in `c`
+\param variant which placement, from 0
+\throws Input_error if the body has fewer placements, with the number it has; a body whose
+distances admit no placement gives an enclosure with `consistent == false`.
 */
 template <class IT, class Traits>
 Body_enclosure<IT> enclose_coordinates(const Rigid_body_collection<Traits>& c, std::size_t body, int variant = 0)

@@ -70,7 +70,7 @@ class Standardizer
 
 public:
   Standardizer(const Collection& in, std::vector<std::string>* log)
-    : c_(in), log_(log), frame_name_(in.frame()), frame_explicit_(in.frame_is_explicit()) {}
+    : c_(in), log_(log), frame_name_(in.frame()), frame_explicit_(in.frame_is_explicit()), frame_holder_(in.frame()) {}
 
   Collection run()
   {
@@ -90,13 +90,11 @@ public:
     check_shared_pairs();
     // The frame passes to the body that absorbed or merged the frame body; that body keeps
     // the frame body's coordinates (see merge_one_pair and absorb_bodies).
-    if (!frame_name_.empty() && c_.body_index(frame_name_) == Collection::npos)
-      for (const Body& b : c_.bodies())
-        if (holds_frame(b)) {
-          note("the scene's frame '" + frame_name_ + "' is now body '" + b.name + "', in the same coordinates");
-          c_.set_frame(b.name);
-          break;
-        }
+    if (frame_holder_ != frame_name_ && c_.body_index(frame_holder_) != Collection::npos) {
+      note("the scene's frame '" + frame_name_ + "' is now body '" + frame_holder_ + "', in the same coordinates");
+      c_.set_frame(frame_holder_);
+    }
+    // (the holder always has coordinates, so primary_first() keeps it primary in every combination)
     return c_;
   }
 
@@ -105,6 +103,7 @@ private:
   std::vector<std::string>* log_;
   std::string frame_name_; // the user body whose local frame results are reported in
   bool frame_explicit_;
+  std::string frame_holder_; // the body whose coordinates are those of the frame body
   std::size_t implied_count_ = 0, merged_count_ = 0;
 
   void note(const std::string& s) { if (log_) log_->push_back(s); }
@@ -139,7 +138,7 @@ private:
     if (bodies.empty())
       throw Input_error("the scene has no rigid body of 3 or more non-collinear points (only bars): nothing to assemble");
     if (!frame_explicit_ && c_.body_index(frame_name_) == Collection::npos) {
-      frame_name_ = bodies.front().name; // the default frame: the first body that is not a bar
+      frame_name_ = frame_holder_ = bodies.front().name; // the default frame: the first body that is not a bar
       c_.set_frame(frame_name_);
     }
     for (const Body& b : bars) {
@@ -206,9 +205,12 @@ private:
         if (small.points.size() == big.points.size() && i < j) continue; // absorb the later of two equal sets
         check_agreement(small, big, small.points);
         note("body '" + small.name + "' lies inside body '" + big.name + "' and is absorbed");
-        Body host = primary_first(big, small) ? combine(big, small) : combine(small, big);
+        const bool big_first = primary_first(big, small);
+        const bool frame_kept = holds_frame(big_first ? big : small);
+        Body host = big_first ? combine(big, small) : combine(small, big);
         host.name = big.name;
         host.origin = big.origin;
+        if (frame_kept) frame_holder_ = host.name;
         bodies[j] = host;
         bodies.erase(bodies.begin() + i);
         return true;
@@ -400,7 +402,7 @@ private:
     for (std::size_t a = 0; a < n; ++a)
       for (std::size_t b = a + 1; b < n; ++b)
         for (std::size_t c = b + 1; c < n; ++c)
-          if (CGAL::sign(triangle_16_area_squared(dm[a][b], dm[a][c], dm[b][c])) != CGAL::ZERO)
+          if (triangle_sign<Traits::has_exact_ft>(dm[a][b], dm[a][c], dm[b][c]) != CGAL::ZERO)
             return std::array<std::size_t, 3>{a, b, c};
     return std::nullopt;
   }
@@ -411,7 +413,7 @@ private:
     std::size_t n = dm.size();
     for (std::size_t a = 0; a < n; ++a) for (std::size_t b = a + 1; b < n; ++b)
       for (std::size_t c = b + 1; c < n; ++c) for (std::size_t d = c + 1; d < n; ++d)
-        if (CGAL::sign(tetrahedron_288_volume_squared(dm[a][b], dm[a][c], dm[a][d], dm[b][c], dm[b][d], dm[c][d])) != CGAL::ZERO)
+        if (tetrahedron_sign<Traits::has_exact_ft>(dm[a][b], dm[a][c], dm[a][d], dm[b][c], dm[b][d], dm[c][d]) != CGAL::ZERO)
           return true;
     return false;
   }
@@ -472,16 +474,17 @@ private:
     return images;
   }
 
-  bool holds_frame(const Body& b) const
-  {
-    return std::find(b.sources.begin(), b.sources.end(), frame_name_) != b.sources.end();
-  }
+  // Does `b` hold the frame body's coordinates (in the frame body's frame)?
+  bool holds_frame(const Body& b) const { return b.name == frame_holder_; }
 
   Body merge(const Body& A, const Body& B)
   {
-    Body m = primary_first(A, B) ? combine(A, B) : combine(B, A);
+    const bool a_first = primary_first(A, B);
+    const bool frame_kept = holds_frame(a_first ? A : B);
+    Body m = a_first ? combine(A, B) : combine(B, A);
     m.name = "merged" + std::to_string(++merged_count_) + "(" + A.name + "+" + B.name + ")";
     m.origin = Body_origin::MERGED;
+    if (frame_kept) frame_holder_ = m.name;
     return m;
   }
 
@@ -553,7 +556,7 @@ private:
     bool planar_nondegenerate = false;
     for (std::size_t a = 0; a < k.size(); ++a) for (std::size_t b = a + 1; b < k.size(); ++b)
       for (std::size_t c = b + 1; c < k.size(); ++c) {
-        CGAL::Sign s = CGAL::sign(triangle_16_area_squared(dm[a][b], dm[a][c], dm[b][c]));
+        CGAL::Sign s = triangle_sign<Traits::has_exact_ft>(dm[a][b], dm[a][c], dm[b][c]);
         if (s == CGAL::NEGATIVE)
           throw Input_error(who + ": the fixed distances between '" + c_.label(k[a]) + "', '" + c_.label(k[b]) + "' and '" +
                             c_.label(k[c]) + "' violate the triangle inequality: no real configuration");
@@ -565,7 +568,7 @@ private:
     if (k.size() <= 12) {
       for (std::size_t a = 0; a < k.size(); ++a) for (std::size_t b = a + 1; b < k.size(); ++b)
         for (std::size_t c = b + 1; c < k.size(); ++c) for (std::size_t d = c + 1; d < k.size(); ++d) {
-          CGAL::Sign s = CGAL::sign(tetrahedron_288_volume_squared(dm[a][b], dm[a][c], dm[a][d], dm[b][c], dm[b][d], dm[c][d]));
+          CGAL::Sign s = tetrahedron_sign<Traits::has_exact_ft>(dm[a][b], dm[a][c], dm[a][d], dm[b][c], dm[b][d], dm[c][d]);
           if (s == CGAL::NEGATIVE)
             throw Input_error(who + ": the fixed distances among '" + c_.label(k[a]) + "', '" + c_.label(k[b]) + "', '" +
                               c_.label(k[c]) + "' and '" + c_.label(k[d]) + "' admit no real configuration");
