@@ -35,7 +35,8 @@ static const char* usage_text =
   "\n"
   "Options:\n"
   "  --json         print the analysis as JSON on standard output instead of text; keys:\n"
-  "                 scene, bodies, implied_bodies, standardization, remaining_distances, dof,\n"
+  "                 scene, bodies (each with name, origin, points, sources, placements),\n"
+  "                 implied_bodies, standardization, remaining_distances, dof,\n"
   "                 overlap_graph,\n"
   "                 covering_set, non_covering, incidence_tree {root, edges [[parent, child,\n"
   "                 weight]], weight, depth_sum, proven_optimal, strategy}, optimal_trees_tied,\n"
@@ -83,13 +84,17 @@ int analyze(const Options& o)
   const long naive = 6 * (long(scene.bodies.size()) - 1);
   auto name = [&](std::size_t b) { return c.body(b).name; };
   // placements of each body up to rigid motion (mirror images, hinge angles)
+  // (0 with a note when this version cannot place the body from its distances)
   std::vector<std::size_t> placements(c.number_of_bodies(), 1);
+  std::vector<std::string> placement_notes(c.number_of_bodies());
   for (std::size_t i = 0; i < c.number_of_bodies(); ++i) {
     if (c.body(i).mirror_variants > 0) { placements[i] = std::size_t(c.body(i).mirror_variants); continue; }
     try {
       placements[i] = RI::enclose_all_placements<CGAL::Interval_nt<false>>(c, i).size();
     } catch (const RI::Input_error& e) {
-      throw RI::Input_error(o.scene + ": " + e.what());
+      placements[i] = 0;
+      placement_notes[i] = e.what();
+      continue;
     }
     if (placements[i] == 0)
       throw RI::Input_error(o.scene + ": body '" + c.body(i).name + "': its distances admit no real placement");
@@ -115,6 +120,7 @@ int analyze(const Options& o)
       const auto& b = c.body(i);
       nlohmann::ordered_json jb = {{"name", b.name}, {"origin", RI::to_string(b.origin)}, {"points", labels(b.points)},
                                    {"sources", b.sources}, {"placements", placements[i]}};
+      if (!placement_notes[i].empty()) jb["placement_note"] = placement_notes[i];
       bodies.push_back(jb);
       if (b.origin == RI::Body_origin::IMPLIED) implied.push_back(jb);
     }
@@ -160,6 +166,7 @@ int analyze(const Options& o)
     const auto& b = c.body(i);
     std::cout << "  " << b.name << " [" << RI::to_string(b.origin) << "]:";
     for (auto l : labels(b.points)) std::cout << " " << l;
+    if (placements[i] == 0) std::cout << "  (placements not enumerated: " << placement_notes[i] << ")";
     if (placements[i] > 1)
       std::cout << "  (" << placements[i] << " placements: its distances fix it only up to "
                 << (b.mirror_variants == 2 ? "a mirror image)" : "a discrete choice)");

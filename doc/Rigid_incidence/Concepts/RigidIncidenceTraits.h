@@ -19,9 +19,11 @@ header of its own; the include line above names the header of the default model.
 <b>Exactness.</b> With an exact field `FT` (`has_exact_ft == true`), every check of the
 package is exact: coincident points, collinearity, agreement of shared distances, the
 Cayley-Menger tests of `standardize()`, the rational map that merges two bodies. With an
-inexact `FT` (doubles), the numbers of a scene are rounded to `FT` when it is read and
-values that should agree are compared with a relative tolerance
-(`Rigid_body_collection::consistency_tolerance`, default \f$10^{-9}\f$).
+inexact `FT` (doubles), the numbers of a scene are rounded to the nearest `FT` when it is
+read, values that should agree are compared with a relative tolerance
+(`Rigid_body_collection::consistency_tolerance`, default \f$10^{-9}\f$), and a Cayley-Menger
+determinant counts as zero within \f$10^{-9}\f$ of its scale (the largest squared distance
+to the power of its degree).
 
 <b>Further requirements on the types.</b> Besides the functions below, the package uses:
 - `FT`: a model of CGAL's `FieldNumberType`, constructible from `int`, for which

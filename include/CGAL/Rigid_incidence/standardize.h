@@ -357,19 +357,26 @@ private:
       }
   }
 
-  // Squared distances among `pts` as known by body a or b (all must be known).
-  std::vector<std::vector<FT>> distance_matrix(const Body& a, const Body* b, const std::vector<std::size_t>& pts) const
+  typedef std::vector<std::vector<std::optional<FT>>> Distance_matrix;
+
+  // Squared distances among `pts` as known exactly by body a or b (nullopt where neither
+  // knows: two points placed from distances in a merged body).
+  Distance_matrix distance_matrix(const Body& a, const Body* b, const std::vector<std::size_t>& pts) const
   {
-    std::vector<std::vector<FT>> m(pts.size(), std::vector<FT>(pts.size(), FT(0)));
+    Distance_matrix m(pts.size(), std::vector<std::optional<FT>>(pts.size(), FT(0)));
     for (std::size_t u = 0; u < pts.size(); ++u)
       for (std::size_t v = u + 1; v < pts.size(); ++v) {
         auto d = body_squared(a, pts[u], pts[v]);
         if (!d && b) d = body_squared(*b, pts[u], pts[v]);
-        if (!d) throw Input_error("standardize: the distance of '" + c_.label(pts[u]) + "' and '" + c_.label(pts[v]) +
-                                  "' is needed but not known exactly (a placement through two implied bodies); not supported yet");
-        m[u][v] = m[v][u] = *d;
+        m[u][v] = m[v][u] = d;
       }
     return m;
+  }
+
+  static bool known(const Distance_matrix& dm, std::initializer_list<std::pair<std::size_t, std::size_t>> pairs)
+  {
+    for (const auto& p : pairs) if (!dm[p.first][p.second]) return false;
+    return true;
   }
 
   bool merge_one_pair()
@@ -382,6 +389,10 @@ private:
         check_agreement(bodies[i], bodies[j], common);
         auto dm = distance_matrix(bodies[i], &bodies[j], common);
         std::optional<std::array<std::size_t, 3>> base = non_collinear_triple(dm);
+        if (!base && !all_known(dm))
+          throw Input_error("standardize: bodies '" + bodies[i].name + "' and '" + bodies[j].name + "' share the points " +
+                            labels_of(c_, common) + ", but no three of them are known exactly to be non-collinear (their"
+                            " distances run through placements from distances); not supported yet");
         if (!base)
           throw Input_error("bodies '" + bodies[i].name + "' and '" + bodies[j].name + "' share " + std::to_string(common.size()) +
                             " collinear points (" + labels_of(c_, common) +
@@ -396,26 +407,23 @@ private:
     return false;
   }
 
-  static std::optional<std::array<std::size_t, 3>> non_collinear_triple(const std::vector<std::vector<FT>>& dm)
+  static bool all_known(const Distance_matrix& dm)
+  {
+    for (const auto& row : dm) for (const auto& x : row) if (!x) return false;
+    return true;
+  }
+
+  // Three points known (from exact distances) not to lie on a line.
+  static std::optional<std::array<std::size_t, 3>> non_collinear_triple(const Distance_matrix& dm)
   {
     std::size_t n = dm.size();
     for (std::size_t a = 0; a < n; ++a)
       for (std::size_t b = a + 1; b < n; ++b)
         for (std::size_t c = b + 1; c < n; ++c)
-          if (triangle_sign<Traits::has_exact_ft>(dm[a][b], dm[a][c], dm[b][c]) != CGAL::ZERO)
+          if (known(dm, {{a, b}, {a, c}, {b, c}}) &&
+              triangle_sign<Traits::has_exact_ft>(*dm[a][b], *dm[a][c], *dm[b][c]) != CGAL::ZERO)
             return std::array<std::size_t, 3>{a, b, c};
     return std::nullopt;
-  }
-
-  // Does the matrix have 4 points spanning 3D?
-  static bool spans_space(const std::vector<std::vector<FT>>& dm)
-  {
-    std::size_t n = dm.size();
-    for (std::size_t a = 0; a < n; ++a) for (std::size_t b = a + 1; b < n; ++b)
-      for (std::size_t c = b + 1; c < n; ++c) for (std::size_t d = c + 1; d < n; ++d)
-        if (tetrahedron_sign<Traits::has_exact_ft>(dm[a][b], dm[a][c], dm[a][d], dm[b][c], dm[b][d], dm[c][d]) != CGAL::ZERO)
-          return true;
-    return false;
   }
 
   // The images in A's frame of B's points with coordinates, under the rigid motion taking
@@ -543,32 +551,36 @@ private:
   void add_implied(const std::vector<std::size_t>& k)
   {
     std::vector<std::string> sources;
-    std::vector<std::vector<FT>> dm(k.size(), std::vector<FT>(k.size(), FT(0)));
+    // A pair can be fixed (both points in one body) without its distance being known exactly
+    // (both placed from distances in a merged body): the implied body then carries the
+    // distances that are known, and its placements are enumerated later.
+    Distance_matrix dm(k.size(), std::vector<std::optional<FT>>(k.size(), FT(0)));
     for (std::size_t u = 0; u < k.size(); ++u)
-      for (std::size_t v = u + 1; v < k.size(); ++v) {
-        auto d = fixed_squared(k[u], k[v], &sources);
-        if (!d) throw Input_error("standardize: the distance of '" + c_.label(k[u]) + "' and '" + c_.label(k[v]) +
-                                  "' is fixed but not known exactly (it runs through an implied placement); not supported yet");
-        dm[u][v] = dm[v][u] = *d;
-      }
+      for (std::size_t v = u + 1; v < k.size(); ++v) dm[u][v] = dm[v][u] = fixed_squared(k[u], k[v], &sources);
+    const bool complete = all_known(dm);
     const std::string who = "implied body {" + labels_of(c_, k, ",") + "}";
     // Realizability, exactly from the squared distances (Cayley-Menger determinants).
     bool planar_nondegenerate = false;
     for (std::size_t a = 0; a < k.size(); ++a) for (std::size_t b = a + 1; b < k.size(); ++b)
       for (std::size_t c = b + 1; c < k.size(); ++c) {
-        CGAL::Sign s = triangle_sign<Traits::has_exact_ft>(dm[a][b], dm[a][c], dm[b][c]);
+        if (!known(dm, {{a, b}, {a, c}, {b, c}})) continue;
+        CGAL::Sign s = triangle_sign<Traits::has_exact_ft>(*dm[a][b], *dm[a][c], *dm[b][c]);
         if (s == CGAL::NEGATIVE)
           throw Input_error(who + ": the fixed distances between '" + c_.label(k[a]) + "', '" + c_.label(k[b]) + "' and '" +
                             c_.label(k[c]) + "' violate the triangle inequality: no real configuration");
         if (s == CGAL::POSITIVE) planar_nondegenerate = true;
       }
-    if (!planar_nondegenerate)
+    if (!planar_nondegenerate && complete)
       throw Input_error(who + ": its fixed distances put all its points on one line (a degenerate body)");
+    if (!planar_nondegenerate)
+      throw Input_error("standardize: " + who + ": no three of its points are known exactly to be non-collinear (their"
+                        " distances run through placements from distances); not supported yet");
     bool spatial = false;
     if (k.size() <= 12) {
       for (std::size_t a = 0; a < k.size(); ++a) for (std::size_t b = a + 1; b < k.size(); ++b)
         for (std::size_t c = b + 1; c < k.size(); ++c) for (std::size_t d = c + 1; d < k.size(); ++d) {
-          CGAL::Sign s = tetrahedron_sign<Traits::has_exact_ft>(dm[a][b], dm[a][c], dm[a][d], dm[b][c], dm[b][d], dm[c][d]);
+          if (!known(dm, {{a, b}, {a, c}, {a, d}, {b, c}, {b, d}, {c, d}})) continue;
+          CGAL::Sign s = tetrahedron_sign<Traits::has_exact_ft>(*dm[a][b], *dm[a][c], *dm[a][d], *dm[b][c], *dm[b][d], *dm[c][d]);
           if (s == CGAL::NEGATIVE)
             throw Input_error(who + ": the fixed distances among '" + c_.label(k[a]) + "', '" + c_.label(k[b]) + "', '" +
                               c_.label(k[c]) + "' and '" + c_.label(k[d]) + "' admit no real configuration");
@@ -587,11 +599,13 @@ private:
     b.has_coordinates.assign(k.size(), false);
     b.coordinates.assign(k.size(), Point_3(0, 0, 0));
     for (std::size_t u = 0; u < k.size(); ++u)
-      for (std::size_t v = u + 1; v < k.size(); ++v) b.squared_distances.push_back(Squared_distance{u, v, dm[u][v]});
+      for (std::size_t v = u + 1; v < k.size(); ++v)
+        if (dm[u][v]) b.squared_distances.push_back(Squared_distance{u, v, *dm[u][v]});
     std::sort(sources.begin(), sources.end());
     sources.erase(std::unique(sources.begin(), sources.end()), sources.end());
     b.sources = sources;
-    b.mirror_variants = spatial ? 2 : 1; // a clique of distances: its mirror image satisfies them too
+    // a clique of distances: its mirror image satisfies them too; with a distance unknown, enumerate
+    b.mirror_variants = !complete ? 0 : (spatial ? 2 : 1);
     note(who + " is added as body '" + b.name + "' (from " + [&] { std::string s; for (std::size_t i = 0; i < sources.size(); ++i) s += (i ? ", " : "") + sources[i]; return s; }() + ")");
     c_.mutable_bodies().push_back(b);
   }
@@ -617,11 +631,19 @@ Repeated until nothing changes:
   after checking that its distances can be realized (Cayley-Menger determinants, exactly).
   Implied bodies keep their squared distances, and the bodies and distances that imply them.
 
-A body whose points are collinear is a bar and enters as distances between its points.
-The result keeps the frame and the name of the input. `log`, if given, receives one line
-per step taken.
+Absorption and merging keep the coordinates of one body (the one holding the scene's frame,
+else the one with more points with coordinates) and bring the other's into its frame by the
+rational rigid map when three non-collinear points have coordinates on both sides; otherwise
+the other's points enter as distances plus an orientation (`Rigid_body_collection::Orientation`),
+so that no user body can come back mirrored. Two bodies sharing two or more points must agree
+on their distances.
 
-\throws Input_error naming the bodies, points or distances that disagree.
+A body of 2 points is a bar and enters as its distance; a body of 3 or more collinear points
+(5 dof) is rejected. The result keeps the name of the input; its `frame()` names the body that
+holds the frame body's coordinates. `log`, if given, receives one line per step taken.
+
+\throws Input_error naming the bodies, points or distances that disagree, or (documented
+limitation) when no three points shared by two bodies are known exactly to be non-collinear.
 */
 template <class Traits>
 Rigid_body_collection<Traits> standardize(const Rigid_body_collection<Traits>& collection,

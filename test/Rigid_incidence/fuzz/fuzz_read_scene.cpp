@@ -3,8 +3,8 @@
 //
 // libFuzzer target: arbitrary bytes -> read_scene -> make_collection (exact kernel and
 // Epick) -> standardize -> dof_count -> optimal_incidence_tree (small budgets) -> DOT output
-// -> enclose_coordinates<Interval_nt<false>> of every body of the standard collection (each
-// mirror variant).
+// -> enclose_all_placements<Interval_nt<false>> of every body of the standard collection (up
+// to 8 placements each).
 // The only exception a malformed scene may raise is RI::Input_error; any other exception,
 // a crash, a sanitizer report, a leak or a hang is a finding.
 // Build: CXX=clang++ cmake -DRIGID_INCIDENCE_FUZZ=ON ...; run: scripts/fuzz.sh [SECONDS].
@@ -60,12 +60,9 @@ void analyse(const RI::Scene& scene)
   RI::write_overlap_graph_dot(dot, c, t);
 
   for (std::size_t i = 0; i < c.number_of_bodies(); ++i) {
-    const auto& b = c.body(i);
-    for (int v = 0; v < b.mirror_variants && v < 2; ++v) {
-      try {
-        (void)RI::enclose_coordinates<CGAL::Interval_nt<false>>(c, i, v);
-      } catch (const RI::Input_error&) {
-      }
+    try {
+      (void)RI::enclose_all_placements<CGAL::Interval_nt<false>>(c, i, 8);
+    } catch (const RI::Input_error&) {
     }
   }
 }
