@@ -152,9 +152,9 @@ public:
   /// All bodies, in index order.
   const std::vector<Body>& bodies() const { return bodies_; }
   /// The index of the body named `name`, or `npos`.
-  std::size_t body_index(const std::string& name) const
+  std::size_t body_index(const std::string& body_name) const
   {
-    for (std::size_t i = 0; i < bodies_.size(); ++i) if (bodies_[i].name == name) return i;
+    for (std::size_t i = 0; i < bodies_.size(); ++i) if (bodies_[i].name == body_name) return i;
     return npos;
   }
 
@@ -163,11 +163,11 @@ public:
     if it has fewer than 2 points, a label twice, or two coincident points.
     Returns the body's index.
   */
-  std::size_t add_body(const std::string& name, const std::vector<std::pair<std::string, Point_3>>& pts)
+  std::size_t add_body(const std::string& body_name, const std::vector<std::pair<std::string, Point_3>>& pts)
   {
-    const std::string where = "body '" + name + "'";
-    if (name.empty()) throw Input_error("a body has an empty name");
-    if (body_index(name) != npos) throw Input_error(where + ": duplicate body name");
+    const std::string where = "body '" + body_name + "'";
+    if (body_name.empty()) throw Input_error("a body has an empty name");
+    if (body_index(body_name) != npos) throw Input_error(where + ": duplicate body name");
     if (pts.size() < 2)
       throw Input_error(where + ": a body needs at least 2 points, it has " + std::to_string(pts.size()));
     for (std::size_t i = 0; i < pts.size(); ++i) {
@@ -183,11 +183,11 @@ public:
     for (const auto& p : pts) ids.emplace_back(intern(p.first), p.second);
     std::sort(ids.begin(), ids.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
     Body b;
-    b.name = name;
+    b.name = body_name;
     for (const auto& p : ids) { b.points.push_back(p.first); b.coordinates.push_back(p.second); }
     b.has_coordinates.assign(ids.size(), true);
     b.origin = Body_origin::USER;
-    b.sources.push_back(name);
+    b.sources.push_back(body_name);
     bodies_.push_back(std::move(b));
     return bodies_.size() - 1;
   }
@@ -197,9 +197,9 @@ public:
     `Input_error` if a label names no point of any body, if the value is not positive, or if
     another distance on the same pair disagrees (an equal one is accepted once).
   */
-  void add_distance(const std::string& a, const std::string& b, const FT& squared, const std::string& name = "")
+  void add_distance(const std::string& a, const std::string& b, const FT& squared, const std::string& distance_name = "")
   {
-    const std::string where = name.empty() ? "distance '" + a + "'-'" + b + "'" : name;
+    const std::string where = distance_name.empty() ? "distance '" + a + "'-'" + b + "'" : distance_name;
     std::size_t pa = point_index(a), pb = point_index(b);
     if (pa == npos) throw Input_error(where + ": names unknown point '" + a + "'");
     if (pb == npos) throw Input_error(where + ": names unknown point '" + b + "'");
