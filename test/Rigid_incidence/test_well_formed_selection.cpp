@@ -19,6 +19,7 @@
 #include "random_collections.h"
 
 #include <iostream>
+#include <map>
 #include <string>
 
 namespace RI = CGAL::Rigid_incidence;
@@ -61,6 +62,26 @@ void check_selection(const C& c, const RI::Incidence_tree& t, const std::string&
   }
 }
 
+// Theorem 1 without a tree, and the redundant incidences of the full system.
+template <class C>
+void check_theorem1(const C& c, const std::vector<std::size_t>& D, const std::string& k, CGAL::Random& rng)
+{
+  RI::Well_formed_selection w = RI::well_formed_incidences(c, D);
+  auto r = RI::is_well_formed(c, w.incidences, w.bodies);
+  CHECK(r.well_formed(), k << " (Theorem 1): not well-formed: " << r.message);
+  CHECK(w.tree_count == 0 && w.remaining_count == w.incidences.size(), k << " (Theorem 1): roles");
+  if (D.size() >= 2) CHECK(jacobian_rank(c, w.incidences, w.bodies, rng) == w.incidences.size(), k << " (Theorem 1): dependent");
+  // full system = selected + redundant, with 3 incidences per pair of bodies through a point
+  std::size_t full = 0;
+  std::map<std::size_t, std::size_t> through;
+  for (std::size_t b : w.bodies) for (std::size_t p : c.body(b).points) ++through[p];
+  for (const auto& t : through) full += 3 * t.second * (t.second - 1) / 2;
+  RI::Incidence_set red = RI::redundant_incidences(c, w);
+  CHECK(red.size() + w.incidences.size() == full, k << ": redundant " << red.size() << " + selected " << w.incidences.size()
+                                                    << " != full system " << full);
+  for (const RI::Incidence& i : red) CHECK(!w.incidences.contains(i), k << ": a redundant incidence is also selected");
+}
+
 template <class Traits>
 void run(const char* kernel)
 {
@@ -98,6 +119,7 @@ void run(const char* kernel)
     if (t.covering_set.size() > 12) continue;
     const std::string k = "random " + std::to_string(n) + " (" + g.s.shape + ")" + K;
     check_selection(c, t, k, rng);
+    check_theorem1(c, t.covering_set, k, rng);
     RI::Incidence_tree_options greedy;
     greedy.exact_limit = 0;
     check_selection(c, RI::optimal_incidence_tree(c, greedy), k + " greedy tree", rng);
