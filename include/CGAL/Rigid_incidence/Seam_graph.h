@@ -33,9 +33,18 @@ class Seam_graph
 public:
   static constexpr std::size_t npos = std::size_t(-1);  ///< no such vertex
   /// A copy (v, c) of a shared point.
-  struct Vertex { std::size_t point; std::size_t body; };
+  struct Vertex
+  {
+    std::size_t point;  ///< the shared point v
+    std::size_t body;   ///< the body c
+  };
   /// A pair of points shared by two or more bodies of D, with those bodies (sorted).
-  struct Shared_pair { std::size_t v; std::size_t w; std::vector<std::size_t> bodies; };
+  struct Shared_pair
+  {
+    std::size_t v;                   ///< the smaller point index
+    std::size_t w;                   ///< the larger point index
+    std::vector<std::size_t> bodies; ///< the bodies of D through both
+  };
 
   /// The seam graph of the bodies `D` of `c`.
   template <class Traits>
