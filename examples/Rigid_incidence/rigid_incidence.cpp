@@ -22,14 +22,17 @@ static const char* usage_text =
   "rigid_incidence: every real configuration of a scene of rigid bodies sharing points.\n"
   "\n"
   "Usage:\n"
-  "  rigid_incidence analyze SCENE.json [--json] [--dot FILE] [--kernel exact|epick|epeck]\n"
+  "  rigid_incidence analyze SCENE.json [--json] [--dot FILE] [--dot-seam FILE]\n"
+  "                          [--kernel exact|epick|epeck]\n"
   "  rigid_incidence --help\n"
   "\n"
   "Commands:\n"
   "  analyze   Read a scene (format \"rigid-incidence-scene/1\"), standardize it (merge bodies\n"
   "            sharing 3 or more points, add implied bodies, absorb what is not proper-maximal),\n"
   "            count its degrees of freedom, build the overlap graph and the optimal incidence\n"
-  "            tree, and print the number of variables of the reduced system next to the\n"
+  "            tree, select a well-formed set of incidences that contains the tree's (the\n"
+  "            Optimal Well-formed Incidence Selection Algorithm), and print the number of\n"
+  "            variables and equations of the reduced system next to the\n"
   "            6(k-1) of the naive formulation (a free rigid motion for each of the k bodies\n"
   "            of the scene, one of them fixed).\n"
   "\n"
@@ -40,9 +43,13 @@ static const char* usage_text =
   "                 overlap_graph,\n"
   "                 covering_set, non_covering, incidence_tree {root, edges [[parent, child,\n"
   "                 weight]], weight, depth_sum, proven_optimal, strategy}, optimal_trees_tied,\n"
-  "                 reduced_variables, naive_variables\n"
+  "                 reduced_variables, naive_variables, well_formed_incidences (each\n"
+  "                 {point, bodies: [a, b], coordinates: [1,2,3] or [1,2], role: \"tree\" |\n"
+  "                 \"remaining\"}), reduced_equations, redundant_incidences\n"
   "  --dot FILE     write the overlap graph in Graphviz DOT to FILE, the tree highlighted\n"
   "                 (render with: dot -Tsvg FILE -o graph.svg)\n"
+  "  --dot-seam FILE write the seam graph of the tree's bodies in Graphviz DOT to FILE,\n"
+  "                 the chosen seam tree highlighted\n"
   "  --kernel K     number type of the coordinates: exact (default; CGAL::Simple_cartesian\n"
   "                 over Gmpq, every check exact), epeck (CGAL's exact-constructions kernel)\n"
   "                 or epick (doubles: scene numbers are rounded to the nearest double and\n"
@@ -54,7 +61,7 @@ static const char* usage_text =
 
 struct Options
 {
-  std::string scene, dot, kernel = "exact";
+  std::string scene, dot, dot_seam, kernel = "exact";
   bool json = false;
 };
 
@@ -79,6 +86,29 @@ int analyze(const Options& o)
               << ")\n";
   RI::Incidence_tree t = RI::optimal_incidence_tree(c);
   RI::Overlap_graph og(c);
+  RI::Well_formed_selection wf = RI::select_well_formed_incidences(c, t);
+  RI::Incidence_set redundant = RI::redundant_incidences(c, wf);
+  // incidences grouped as the user reads them: per point and pair of bodies, the coordinates
+  struct Group { std::size_t point, a, b; std::vector<int> coords; bool tree; };
+  auto group = [&](const RI::Incidence_set& set, const std::vector<RI::Well_formed_selection::Role>* roles) {
+    std::vector<Group> out;
+    std::size_t n = 0;
+    for (const RI::Incidence& i : set) {
+      bool tree_role = roles && (*roles)[n] == RI::Well_formed_selection::TREE;
+      if (!out.empty() && out.back().point == i.point && out.back().a == i.body_a && out.back().b == i.body_b &&
+          out.back().tree == tree_role)
+        out.back().coords.push_back(i.coordinate);
+      else out.push_back(Group{i.point, i.body_a, i.body_b, {i.coordinate}, tree_role});
+      ++n;
+    }
+    return out;
+  };
+  const std::vector<Group> selected_groups = group(wf.incidences, &wf.roles), redundant_groups = group(redundant, nullptr);
+  if (!o.dot_seam.empty()) {
+    std::ofstream dot(o.dot_seam);
+    if (!dot) { std::cerr << "rigid_incidence: cannot write " << o.dot_seam << "\n"; return 1; }
+    RI::write_seam_graph_dot(dot, c, wf);
+  }
   // The naive formulation gives each body of the scene a free rigid motion (6 variables)
   // and fixes one: 6(k-1) for the k bodies the user wrote.
   const long naive = 6 * (long(scene.bodies.size()) - 1);
@@ -149,6 +179,15 @@ int analyze(const Options& o)
     j["incidence_tree"] = {{"root", name(t.root)}, {"edges", tedges}, {"weight", t.weight}, {"depth_sum", t.depth_sum},
                            {"proven_optimal", t.proven_optimal}, {"strategy", t.strategy}};
     j["optimal_trees_tied"] = t.ties;
+    nlohmann::ordered_json wfj = nlohmann::ordered_json::array(), redj = nlohmann::ordered_json::array();
+    for (const Group& g : selected_groups)
+      wfj.push_back({{"point", c.label(g.point)}, {"bodies", {name(g.a), name(g.b)}}, {"coordinates", g.coords},
+                     {"role", g.tree ? "tree" : "remaining"}});
+    for (const Group& g : redundant_groups)
+      redj.push_back({{"point", c.label(g.point)}, {"bodies", {name(g.a), name(g.b)}}, {"coordinates", g.coords}});
+    j["well_formed_incidences"] = wfj;
+    j["reduced_equations"] = wf.remaining_count + c.distances().size();
+    j["redundant_incidences"] = redj;
     j["reduced_variables"] = t.weight;
     j["naive_variables"] = naive;
     std::cout << j.dump(2) << "\n";
@@ -202,9 +241,24 @@ int analyze(const Options& o)
     std::cout << "  " << t.ties << " rooted trees tie on weight and depth sum" << (t.ties_complete ? "" : " (at least)")
               << "; the tie-break prefers bodies with the user's coordinates, then the order of the bodies\n";
   std::cout << "  search: " << t.strategy << "\n";
+  std::cout << "\nwell-formed incidences of the tree's bodies: " << wf.incidences.size() << " (" << wf.tree_count
+            << " eliminated by the tree, " << wf.remaining_count << " remaining)\n";
+  for (const Group& g : selected_groups) {
+    std::cout << "  " << c.label(g.point) << "  " << name(g.a) << " = " << name(g.b) << "  coordinates";
+    for (int p : g.coords) std::cout << " " << p;
+    std::cout << (g.tree ? "  (tree)" : "  (remaining)") << "\n";
+  }
+  std::cout << "redundant incidences left out: " << redundant.size() << "\n";
+  for (const Group& g : redundant_groups) {
+    std::cout << "  " << c.label(g.point) << "  " << name(g.a) << " = " << name(g.b) << "  coordinates";
+    for (int p : g.coords) std::cout << " " << p;
+    std::cout << "\n";
+  }
   std::cout << "\nreduced system: " << t.weight << " variables, against 6(k-1) = " << naive
             << " for the naive formulation (a free rigid motion for each of the k = " << scene.bodies.size()
-            << " bodies of the scene, one fixed)\n";
+            << " bodies of the scene, one fixed); " << wf.remaining_count + c.distances().size() << " equations ("
+            << wf.remaining_count << " remaining incidences, " << c.distances().size()
+            << " remaining distances; the distances rigidifying bodies outside the covering set come with the reduced system)\n";
   if (!dof.connected || dof.dof != 0)
     std::cout << "  note: the scene is " << (dof.connected ? "" : "not connected and ") << dof.verdict()
               << " by the dof count (dof = " << dof.dof << "): the tree covers the shared points, but its variables"
@@ -223,9 +277,9 @@ int main(int argc, char** argv)
     const std::string& a = args[i];
     if (a == "--json") o.json = true;
     else if (a == "--help" || a == "-h") { std::cout << usage_text; return 0; }
-    else if (a == "--dot" || a == "--kernel") {
+    else if (a == "--dot" || a == "--kernel" || a == "--dot-seam") {
       if (i + 1 >= args.size()) { std::cerr << "rigid_incidence: " << a << " needs a value\n"; return 1; }
-      (a == "--dot" ? o.dot : o.kernel) = args[++i];
+      (a == "--dot" ? o.dot : a == "--dot-seam" ? o.dot_seam : o.kernel) = args[++i];
     } else if (!a.empty() && a[0] == '-') { std::cerr << "rigid_incidence: unknown option '" << a << "' (see --help)\n"; return 1; }
     else if (o.scene.empty()) o.scene = a;
     else { std::cerr << "rigid_incidence: more than one scene given ('" << a << "')\n"; return 1; }

@@ -9,8 +9,11 @@
 #include <CGAL/Rigid_incidence/Overlap_graph.h>
 #include <CGAL/Rigid_incidence/Rigid_body_collection.h>
 #include <CGAL/Rigid_incidence/optimal_incidence_tree.h>
+#include <CGAL/Rigid_incidence/Seam_graph.h>
+#include <CGAL/Rigid_incidence/well_formed_incidences.h>
 
 #include <ostream>
+#include <set>
 #include <string>
 
 namespace CGAL {
@@ -71,6 +74,47 @@ void write_overlap_graph_dot(std::ostream& os, const Rigid_body_collection<Trait
   for (const auto& te : t.edges)
     if (te.weight == 6)
       os << "  b" << te.parent << " -- b" << te.child << " [label=\"6\", penwidth=3, color=\"#c0392b\"];\n";
+  os << "}\n";
+}
+
+/*!
+\ingroup PkgRigidIncidenceIO
+\brief Writes the seam graph of the selection's bodies in Graphviz DOT, with the chosen seam
+tree highlighted.
+
+One cluster per body holds its copies (v, c) of shared points; line seam edges are dashed;
+point seam edges of the selection are drawn: bold red for the seam tree F1 (three coordinates
+matched), blue for the other edges of F* (coordinates 1 and 2). Point seam edges left out are
+not drawn (each point's copies form a complete graph).
+*/
+template <class Traits>
+void write_seam_graph_dot(std::ostream& os, const Rigid_body_collection<Traits>& c, const Well_formed_selection& s)
+{
+  using internal::dot_escape;
+  using internal::dot_quote;
+  Seam_graph g(c, s.bodies);
+  os << "graph seam {\n";
+  os << "  label=" << dot_quote("seam graph of " + dot_escape(c.name.empty() ? std::string("scene") : c.name) + ": " +
+                                  std::to_string(s.incidences.size()) + " well-formed incidences (" +
+                                  std::to_string(s.tree_count) + " tree, " + std::to_string(s.remaining_count) +
+                                  " remaining); red: seam tree (3 coordinates), blue: 2 coordinates, dashed: line seam edges")
+     << ";\n  node [fontname=Helvetica, shape=circle, fontsize=10]; edge [fontname=Helvetica];\n";
+  for (std::size_t b : s.bodies) {
+    os << "  subgraph cluster_b" << b << " {\n    label=" << dot_quote(dot_escape(c.body(b).name)) << ";\n";
+    for (std::size_t k = 0; k < g.vertices().size(); ++k)
+      if (g.vertices()[k].body == b)
+        os << "    v" << k << " [label=" << dot_quote(dot_escape(c.label(g.vertices()[k].point))) << "];\n";
+    os << "  }\n";
+  }
+  for (const auto& e : g.shared_pairs())
+    for (std::size_t b : e.bodies)
+      os << "  v" << g.vertex(e.v, b) << " -- v" << g.vertex(e.w, b) << " [style=dashed, color=gray50];\n";
+  std::set<std::pair<std::size_t, std::size_t>> tree(s.seam_tree.begin(), s.seam_tree.end());
+  for (const auto& e : s.point_seam_edges) {
+    bool in_tree = tree.count(e) || tree.count({e.second, e.first});
+    os << "  v" << e.first << " -- v" << e.second
+       << (in_tree ? " [penwidth=3, color=\"#c0392b\", label=\"1,2,3\"];\n" : " [color=\"#2e86c1\", label=\"1,2\"];\n");
+  }
   os << "}\n";
 }
 
