@@ -142,6 +142,28 @@ int main(int argc, char** argv)
   }
   CHECK(j["optimal_trees_tied"].get<long>() >= 1, "optimal_trees_tied < 1");
 
+  // well-formed incidences (issue 4): each {point, bodies [a, b], coordinates, role}; the
+  // tree's ones are exactly those of its edges (a triple and, for a shared pair, a double)
+  long wf_total = 0, wf_tree = 0, wf_remaining = 0;
+  if (has(j, "well_formed_incidences", T::array) && has(j, "redundant_incidences", T::array) &&
+      has(j, "reduced_equations", T::number_integer)) {
+    for (const auto& w : j["well_formed_incidences"]) {
+      bool ok = has(w, "point", T::string) && has(w, "bodies", T::array) && w["bodies"].size() == 2 &&
+                has(w, "coordinates", T::array) && has(w, "role", T::string);
+      CHECK(ok, "a well_formed_incidences entry lacks point, bodies [a, b], coordinates or role");
+      if (!ok) continue;
+      const std::string role = w["role"].get<std::string>();
+      CHECK(role == "tree" || role == "remaining", "role " << role);
+      long n = long(w["coordinates"].size());
+      for (const auto& p : w["coordinates"]) CHECK(p.is_number_integer() && p.get<int>() >= 1 && p.get<int>() <= 3, "coordinate " << p);
+      wf_total += n;
+      (role == "tree" ? wf_tree : wf_remaining) += n;
+    }
+    // every tree edge eliminates 3 incidences per shared point minus 1 per shared pair: 6 - weight
+    long eliminated = 0;
+    for (const auto& e : t["edges"]) eliminated += 6 - e[2].get<long>();
+    CHECK(wf_tree == eliminated, "tree incidences " << wf_tree << ", but the tree's edges eliminate " << eliminated);
+  }
   // expected values
   auto num = [&](const std::string& k, long got) {
     if (expect.count(k)) CHECK(std::to_string(got) == expect[k], k << ": got " << got << ", expected " << expect[k]);
@@ -154,10 +176,13 @@ int main(int argc, char** argv)
   num("--naive", j["naive_variables"].get<long>());
   num("--ties", j["optimal_trees_tied"].get<long>());
   num("--covering", long(cover.size()));
+  num("--well-formed", wf_total);
+  num("--remaining", wf_remaining);
   if (expect.count("--root")) CHECK(root == expect["--root"], "root: got " << root << ", expected " << expect["--root"]);
   for (const auto& [k, v] : expect) {
     static const std::set<std::string> known = {"--bodies", "--implied", "--weight", "--depth-sum", "--root",
-                                                "--reduced", "--naive", "--ties", "--covering"};
+                                                "--reduced", "--naive", "--ties", "--covering",
+                                                "--well-formed", "--remaining"};
     if (!known.count(k)) { std::cerr << "cli_json_check: unknown option " << k << "\n"; return 2; }
   }
   std::cout << "cli_json_check " << argv[1] << ": " << failures << " failures\n";

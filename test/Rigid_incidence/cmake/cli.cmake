@@ -164,12 +164,12 @@ if(TARGET rigid_incidence)
   # --- --json, checked by a small program
   add_executable(cli_json_check ${CMAKE_CURRENT_LIST_DIR}/../cli_json_check.cpp)
   target_link_libraries(cli_json_check PRIVATE nlohmann_json::nlohmann_json)
-  set(_ri_expect_tetra "--bodies|7|--implied|4|--weight|3|--depth-sum|3|--root|I1{P12,P23,P31}|--reduced|3|--naive|12|--covering|4")
+  set(_ri_expect_tetra "--bodies|7|--implied|4|--weight|3|--depth-sum|3|--root|I1{P12,P23,P31}|--reduced|3|--naive|12|--covering|4|--well-formed|15|--remaining|0")
   # naive_variables = 6(k-1) over the k bodies of the scene (3 for tetra: 12), as the tool defines
   # it since commit f92bedc; over the covering set (Section 4.2 of the paper) it would be 18.
   set(_ri_expect_tetra_i "${_ri_expect_tetra}")
-  set(_ri_expect_quad "--bodies|9|--weight|4|--depth-sum|4|--root|c5|--reduced|4|--naive|24")
-  set(_ri_expect_pent "--bodies|6|--weight|4|--depth-sum|6|--root|c5|--ties|6|--reduced|4|--naive|24")
+  set(_ri_expect_quad "--bodies|9|--weight|4|--depth-sum|4|--root|c5|--reduced|4|--naive|24|--well-formed|20|--remaining|0")
+  set(_ri_expect_pent "--bodies|6|--weight|4|--depth-sum|6|--root|c5|--ties|6|--reduced|4|--naive|24|--well-formed|23|--remaining|3")
 
   file(GLOB _scenes ${RIGID_INCIDENCE_DATA_DIR}/*.json)
   foreach(_scene ${_scenes})
@@ -196,4 +196,10 @@ if(TARGET rigid_incidence)
                    "-DARGS=analyze|${RIGID_INCIDENCE_DATA_DIR}/tetra.json|--dot|${CMAKE_CURRENT_BINARY_DIR}/cli_tetra.dot"
                    -DEXPECT_RC=0 "-DCHECK_FILE=${CMAKE_CURRENT_BINARY_DIR}/cli_tetra.dot"
                    "-DCHECK_FILE_REGEX=^graph overlap&&c1&&I1{P12,P23,P31}&&}[ \t\r\n]*$" -P ${_ri_cli_script})
+  # --dot-seam FILE writes the seam graph with the seam tree (three coordinates) highlighted
+  add_test(NAME cli_dot_seam
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}"
+                   "-DARGS=analyze|${RIGID_INCIDENCE_DATA_DIR}/pent.json|--dot-seam|${CMAKE_CURRENT_BINARY_DIR}/cli_pent_seam.dot"
+                   -DEXPECT_RC=0 "-DCHECK_FILE=${CMAKE_CURRENT_BINARY_DIR}/cli_pent_seam.dot"
+                   "-DCHECK_FILE_REGEX=^graph seam&&cluster_b&&1,2,3&&23 well-formed incidences&&}[ \t\r\n]*$" -P ${_ri_cli_script})
 endif()
