@@ -13,3 +13,6 @@ mkdir -p "$build/results"
 "$build/benchmark/Rigid_incidence/benchmark_incidence_tree" "$build/results/incidence_tree" "${1:-40}" "${2:-5}"
 echo
 cat "$build/results/incidence_tree.md"
+"$build/benchmark/Rigid_incidence/benchmark_well_formed_selection" "$build/results/well_formed_selection" 10000 3
+echo
+cat "$build/results/well_formed_selection.md"

@@ -62,12 +62,15 @@ public:
         vertices_.push_back(Vertex{t.first, b});
       }
     }
+    // pairs shared by two bodies of D, found through the points (linear in the incidences,
+    // not quadratic in the bodies): the shared points of every two bodies meeting at a point
+    std::map<std::pair<std::size_t, std::size_t>, std::vector<std::size_t>> meet; // (body, body) -> shared points
+    for (const auto& t : through)
+      for (std::size_t i = 0; i < t.second.size(); ++i)
+        for (std::size_t j = i + 1; j < t.second.size(); ++j) meet[{t.second[i], t.second[j]}].push_back(t.first);
     std::map<std::pair<std::size_t, std::size_t>, std::vector<std::size_t>> pairs;
-    for (std::size_t a = 0; a < D_.size(); ++a)
-      for (std::size_t b = a + 1; b < D_.size(); ++b) {
-        auto common = c.common_points(D_[a], D_[b]);
-        if (common.size() == 2) pairs[{common[0], common[1]}];
-      }
+    for (const auto& m : meet)
+      if (m.second.size() == 2) pairs[{(std::min)(m.second[0], m.second[1]), (std::max)(m.second[0], m.second[1])}];
     // bodies of D through both points of each pair (those through the first point, filtered)
     for (auto& e : pairs) {
       for (std::size_t b : through[e.first.first])

@@ -495,6 +495,61 @@ Incidence_tree optimal_incidence_tree(const Rigid_body_collection<Traits>& colle
   return search.run();
 }
 
+/*!
+\ingroup PkgRigidIncidenceRef
+\brief An incidence tree given by the user: `edges` (pairs of body indices) must form a
+spanning tree of their bodies, rooted at `root`; weights come from the overlap graph.
+
+For `select_well_formed_incidences()` with a tree of one's own choice (the paper shows that
+the well-formed extension works for any spanning tree). The tree's bodies must cover the
+points they share with each other; covering all shared points of the collection is not
+required (the tree then defines its own sub-collection D).
+\throws Input_error if the edges do not form a tree containing `root`, or name a body twice.
+*/
+template <class Traits>
+Incidence_tree make_incidence_tree(const Rigid_body_collection<Traits>& c, std::size_t root,
+                                   const std::vector<std::pair<std::size_t, std::size_t>>& edges)
+{
+  const std::size_t n = c.number_of_bodies();
+  if (root >= n) throw Input_error("make_incidence_tree: no body " + std::to_string(root));
+  Incidence_tree t;
+  std::vector<std::vector<std::size_t>> adj(n);
+  std::vector<bool> in(n, false);
+  in[root] = true;
+  for (const auto& e : edges) {
+    if (e.first >= n || e.second >= n || e.first == e.second)
+      throw Input_error("make_incidence_tree: edge (" + std::to_string(e.first) + ", " + std::to_string(e.second) + ") is not a pair of bodies");
+    adj[e.first].push_back(e.second);
+    adj[e.second].push_back(e.first);
+    in[e.first] = in[e.second] = true;
+  }
+  for (std::size_t b = 0; b < n; ++b) (in[b] ? t.covering_set : t.non_covering).push_back(b);
+  if (edges.size() + 1 != t.covering_set.size())
+    throw Input_error("make_incidence_tree: " + std::to_string(edges.size()) + " edges on " + std::to_string(t.covering_set.size()) +
+                      " bodies: not a tree");
+  Overlap_graph og(c);
+  t.root = root;
+  t.parent.assign(n, Incidence_tree::npos);
+  t.depth.assign(n, -1);
+  t.depth[root] = 0;
+  std::vector<std::size_t> queue{root};
+  for (std::size_t k = 0; k < queue.size(); ++k)
+    for (std::size_t v : adj[queue[k]])
+      if (t.depth[v] < 0) {
+        t.depth[v] = t.depth[queue[k]] + 1;
+        t.parent[v] = queue[k];
+        t.edges.push_back(Incidence_tree::Edge{queue[k], v, og.weight(queue[k], v)});
+        t.weight += og.weight(queue[k], v);
+        t.depth_sum += t.depth[v];
+        queue.push_back(v);
+      }
+  if (queue.size() != t.covering_set.size()) throw Input_error("make_incidence_tree: the edges are not connected: not a tree");
+  t.ties = 1;
+  t.proven_optimal = false;
+  t.strategy = "given by the user";
+  return t;
+}
+
 } // namespace Rigid_incidence
 } // namespace CGAL
 
