@@ -31,8 +31,8 @@ int main(int argc, char** argv)
   std::size_t max_n = argc > 2 ? std::size_t(std::stoul(argv[2])) : 10000;
   int repeats = argc > 3 ? std::stoi(argv[3]) : 3;
   std::ofstream md(prefix + ".md");
-  md << "| bodies |C| | shared points |X| | |C|(|C|+|X|) | selected incidences | remaining | time (s, best of " << repeats
-     << ") | time / (|C|(|C|+|X|)) (ns) |\n|---:|---:|---:|---:|---:|---:|---:|\n";
+  md << "| bodies C | shared points X | C (C + X) | selected incidences | remaining | time (s, best of " << repeats
+     << ") | time / (C (C + X)) (ns) |\n|---:|---:|---:|---:|---:|---:|---:|\n";
   std::vector<double> lx, lt, lb;
   for (std::size_t n = 10; n <= max_n; n *= 10) {
     RI::Rigid_body_collection<Traits> c;
@@ -80,7 +80,7 @@ int main(int argc, char** argv)
     return sxy / sxx;
   };
   double e_time = slope(lx, lt), e_bound = slope(lx, lb);
-  md << "\nFitted growth exponent in |C| (least squares, log-log): time " << e_time << "; the paper's bound |C|(|C|+|X|) "
+  md << "\nFitted growth exponent in C (least squares, log-log): time " << e_time << "; the paper's bound C (C + X) "
      << e_bound << ".\n";
   std::cout << "fitted exponent: time " << e_time << ", bound " << e_bound << "\nwrote " << prefix << ".md\n";
   return 0;

@@ -97,6 +97,26 @@ void run(const char* kernel)
           e.file << K << ": " << s.incidences.size() << " incidences (" << s.tree_count << " tree), expected " << e.total << " ("
                  << e.tree << ")");
   }
+  // a tree of the user's choice on tetra's covering set: c1 - c2 - c3 - I1 (weights 3, 3, 1)
+  {
+    auto c = RI::standardize(RI::make_collection<Traits>(RI::read_scene(std::string(RIGID_INCIDENCE_DATA_DIR) + "/tetra.json")));
+    std::size_t c1 = c.body_index("c1"), c2 = c.body_index("c2"), c3 = c.body_index("c3"), i1 = c.body_index("I1{P12,P23,P31}");
+    RI::Incidence_tree t = RI::make_incidence_tree(c, c1, {{c1, c2}, {c2, c3}, {c3, i1}});
+    CHECK(t.weight == 7 && t.depth_sum == 6 && t.covering_set.size() == 4, "user tree on tetra" << K << ": weight " << t.weight);
+    check_selection(c, t, "tetra, user tree" + K, rng);
+    auto s = RI::select_well_formed_incidences(c, t);
+    CHECK(s.incidences.size() == 15 && s.tree_count == 11 && s.remaining_count == 4,
+          "tetra, user tree" << K << ": " << s.incidences.size() << " (" << s.tree_count << " tree)");
+    bool threw = false;
+    try { RI::make_incidence_tree(c, c1, {{c1, c2}, {c2, c3}, {c3, c1}}); } catch (const RI::Input_error&) { threw = true; }
+    CHECK(threw, "a cycle accepted as a tree" << K);
+    threw = false;
+    try { RI::make_incidence_tree(c, c1, {{c1, c2}, {c2, c1}, {c3, i1}}); } catch (const RI::Input_error&) { threw = true; }
+    CHECK(threw, "a doubled edge plus a separate edge accepted as a tree" << K);
+    threw = false;
+    try { RI::make_incidence_tree(c, c1, {{c2, c3}, {i1, c.body_index("I2{D1,G3,P31}")}}); } catch (const RI::Input_error&) { threw = true; }
+    CHECK(threw, "a disconnected forest accepted as a tree" << K);
+  }
   // random collections (up to 10 bodies), the optimal tree and, for each, a second tree: the
   // greedy one (the algorithm must extend any spanning tree, not only the optimal one)
   int done = 0;
