@@ -37,10 +37,17 @@ struct Well_formed_selection
   std::vector<Role> roles;          ///< per incidence of `incidences` (in its order)
   std::size_t tree_count = 0;       ///< incidences eliminated by the tree
   std::size_t remaining_count = 0;  ///< incidences left as equations of the reduced system
-  /// The seam tree F1 (point seam edges, as pairs of seam-graph vertices): third coordinates.
-  std::vector<std::pair<std::size_t, std::size_t>> seam_tree;
-  /// F*: the point seam edges of the maximal point-seam-cycle-avoiding extension.
-  std::vector<std::pair<std::size_t, std::size_t>> point_seam_edges;
+  /// A point seam edge: the copies of `point` in two bodies.
+  struct Seam_edge
+  {
+    std::size_t point;   ///< the shared point
+    std::size_t body_a;  ///< one body
+    std::size_t body_b;  ///< the other body
+  };
+  /// The seam tree F1 (point seam edges whose three coordinates are matched).
+  std::vector<Seam_edge> seam_tree;
+  /// F*: the point seam edges of the maximal point-seam-cycle-avoiding extension (coordinates 1, 2).
+  std::vector<Seam_edge> point_seam_edges;
 };
 
 namespace internal {
@@ -48,15 +55,17 @@ namespace internal {
 // Steps (2b), (2c) and (3) of Section 6 from a seam forest F0 (with its edges already in
 // `conn`) and the double incidences P.
 inline void complete_selection(const Seam_graph& g, Seam_connectivity& conn, Well_formed_selection& out,
+                               std::vector<std::pair<std::size_t, std::size_t>> F1,
                                const std::vector<std::pair<std::size_t, std::size_t>>& P,
                                const std::set<Incidence>& from_tree)
 {
+  std::vector<std::pair<std::size_t, std::size_t>> Fstar;
   // (2b) complete to a seam tree
   for (const auto& pc : g.copies()) {
     const auto& cs = pc.second;
     for (std::size_t i = 0; i < cs.size(); ++i)
       for (std::size_t j = i + 1; j < cs.size(); ++j)
-        if (conn.add_point_seam_edge(cs[i], cs[j])) out.seam_tree.push_back({cs[i], cs[j]});
+        if (conn.add_point_seam_edge(cs[i], cs[j])) F1.push_back({cs[i], cs[j]});
   }
   // (2c) F1, then P, then every other point seam edge, without point-seam cycles
   std::vector<std::size_t> parent(g.vertices().size());
@@ -66,12 +75,14 @@ inline void complete_selection(const Seam_graph& g, Seam_connectivity& conn, Wel
     std::size_t ra = find(a), rb = find(b);
     if (ra == rb) return false;
     parent[ra] = rb;
-    out.point_seam_edges.push_back({a, b});
+    Fstar.push_back({a, b});
     return true;
   };
-  for (const auto& e : out.seam_tree)
+  for (const auto& e : F1)
     if (!add(e.first, e.second)) throw Input_error("well-formed selection: the seam tree has a point-seam cycle (internal error)");
-  for (const auto& e : P) add(e.first, e.second);
+  for (const auto& e : P)
+    if (!add(e.first, e.second)) // Lemma 1 (3): cannot happen; a tree incidence must never be dropped silently
+      throw Input_error("well-formed selection: a double incidence of the tree closes a point-seam cycle (internal error)");
   for (const auto& pc : g.copies())
     for (std::size_t i = 0; i < pc.second.size(); ++i)
       for (std::size_t j = i + 1; j < pc.second.size(); ++j) add(pc.second[i], pc.second[j]);
@@ -82,8 +93,13 @@ inline void complete_selection(const Seam_graph& g, Seam_connectivity& conn, Wel
     return Incidence(a.point, a.body, b.body, p);
   };
   std::vector<Incidence> all;
-  for (const auto& e : out.point_seam_edges) { all.push_back(incidence(e, 1)); all.push_back(incidence(e, 2)); }
-  for (const auto& e : out.seam_tree) all.push_back(incidence(e, 3));
+  for (const auto& e : Fstar) { all.push_back(incidence(e, 1)); all.push_back(incidence(e, 2)); }
+  for (const auto& e : F1) all.push_back(incidence(e, 3));
+  auto as_seam_edge = [&](const std::pair<std::size_t, std::size_t>& e) {
+    return Well_formed_selection::Seam_edge{g.vertices()[e.first].point, g.vertices()[e.first].body, g.vertices()[e.second].body};
+  };
+  for (const auto& e : F1) out.seam_tree.push_back(as_seam_edge(e));
+  for (const auto& e : Fstar) out.point_seam_edges.push_back(as_seam_edge(e));
   out.incidences = Incidence_set(all);
   for (const Incidence& i : out.incidences) {
     bool t = from_tree.count(i) > 0;
@@ -123,7 +139,7 @@ Well_formed_selection select_well_formed_incidences(const Rigid_body_collection<
   Seam_graph g(c, out.bodies);
   Seam_connectivity conn(g);
   std::set<Incidence> from_tree;
-  std::vector<std::pair<std::size_t, std::size_t>> P;
+  std::vector<std::pair<std::size_t, std::size_t>> F0, P;
   for (const auto& e : tree.edges) {
     std::vector<std::size_t> shared = c.common_points(e.parent, e.child);
     if (shared.empty()) continue;
@@ -133,14 +149,14 @@ Well_formed_selection select_well_formed_incidences(const Rigid_body_collection<
     std::size_t a = g.vertex(shared[0], e.parent), b = g.vertex(shared[0], e.child);
     if (!conn.add_point_seam_edge(a, b))
       throw Input_error("select_well_formed_incidences: the tree's triple incidences close a seam cycle: not a tree of D");
-    out.seam_tree.push_back({a, b});
+    F0.push_back({a, b});
     for (int p : {1, 2, 3}) from_tree.insert(Incidence(shared[0], e.parent, e.child, p));
     if (shared.size() == 2) {
       P.push_back({g.vertex(shared[1], e.parent), g.vertex(shared[1], e.child)});
       for (int p : {1, 2}) from_tree.insert(Incidence(shared[1], e.parent, e.child, p));
     }
   }
-  internal::complete_selection(g, conn, out, P, from_tree);
+  internal::complete_selection(g, conn, out, F0, P, from_tree);
   return out;
 }
 
@@ -158,7 +174,7 @@ Well_formed_selection well_formed_incidences(const Rigid_body_collection<Traits>
   out.bodies = D;
   Seam_graph g(c, out.bodies);
   Seam_connectivity conn(g);
-  internal::complete_selection(g, conn, out, {}, {});
+  internal::complete_selection(g, conn, out, {}, {}, {});
   return out;
 }
 

@@ -109,9 +109,11 @@ void write_seam_graph_dot(std::ostream& os, const Rigid_body_collection<Traits>&
   for (const auto& e : g.shared_pairs())
     for (std::size_t b : e.bodies)
       os << "  v" << g.vertex(e.v, b) << " -- v" << g.vertex(e.w, b) << " [style=dashed, color=gray50];\n";
-  std::set<std::pair<std::size_t, std::size_t>> tree(s.seam_tree.begin(), s.seam_tree.end());
-  for (const auto& e : s.point_seam_edges) {
-    bool in_tree = tree.count(e) || tree.count({e.second, e.first});
+  std::set<std::pair<std::size_t, std::size_t>> tree;
+  for (const auto& e : s.seam_tree) tree.insert(std::minmax(g.vertex(e.point, e.body_a), g.vertex(e.point, e.body_b)));
+  for (const auto& se : s.point_seam_edges) {
+    const std::pair<std::size_t, std::size_t> e = std::minmax(g.vertex(se.point, se.body_a), g.vertex(se.point, se.body_b));
+    bool in_tree = tree.count(e) > 0;
     os << "  v" << e.first << " -- v" << e.second
        << (in_tree ? " [penwidth=3, color=\"#c0392b\", label=\"1,2,3\"];\n" : " [color=\"#2e86c1\", label=\"1,2\"];\n");
   }
