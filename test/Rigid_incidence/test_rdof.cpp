@@ -45,16 +45,7 @@ using random_collections::build;
 typedef RI::Rigid_incidence_traits<CGAL::Simple_cartesian<CGAL::Gmpq>> Exact_traits;
 typedef RI::Rigid_incidence_traits<CGAL::Exact_predicates_inexact_constructions_kernel> Epick_traits;
 
-static int failures = 0;
-static long checks = 0;
-#define CHECK(cond, msg)                                                                  \
-  do {                                                                                    \
-    ++checks;                                                                             \
-    if (!(cond)) {                                                                        \
-      ++failures;                                                                         \
-      std::cerr << "FAIL (line " << __LINE__ << ") " << msg << "\n";                      \
-    }                                                                                     \
-  } while (0)
+#include "test_check.h"
 
 typedef std::bitset<256> Points;
 

@@ -37,15 +37,7 @@ using namespace planted;
 typedef RI::Rigid_incidence_traits<CGAL::Simple_cartesian<CGAL::Gmpq>> Exact;
 typedef RI::Rigid_incidence_traits<CGAL::Exact_predicates_inexact_constructions_kernel> Epick;
 
-static int failures = 0;
-static long checks = 0;
-// The first 80 failures (or $RI_TEST_MAX_MESSAGES) are printed, the others only counted.
-static const int max_messages = std::getenv("RI_TEST_MAX_MESSAGES") ? std::atoi(std::getenv("RI_TEST_MAX_MESSAGES")) : 80;
-#define CHECK(cond, msg)                                                                   \
-  do {                                                                                     \
-    ++checks;                                                                              \
-    if (!(cond) && ++failures <= max_messages) std::cerr << "FAIL " << __LINE__ << ": " << msg << "\n"; \
-  } while (0)
+#include "test_check.h"
 
 template <class Traits> std::string kname() { return Traits::has_exact_ft ? "exact" : "epick"; }
 
