@@ -58,6 +58,11 @@ void analyse(const RI::Scene& scene)
   RI::Incidence_tree t = RI::optimal_incidence_tree(c, options);
   std::ostringstream dot;
   RI::write_overlap_graph_dot(dot, c, t);
+  // the well-formed selection; on small trees also the exhaustive Definition 4 check
+  RI::Well_formed_selection wf = RI::select_well_formed_incidences(c, t);
+  RI::write_seam_graph_dot(dot, c, wf);
+  (void)RI::redundant_incidences(c, wf);
+  if (wf.bodies.size() <= 10) (void)RI::is_well_formed(c, wf.incidences, wf.bodies);
 
   for (std::size_t i = 0; i < c.number_of_bodies(); ++i) {
     try {
