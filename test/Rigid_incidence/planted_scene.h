@@ -193,6 +193,21 @@ inline QP reflect(const QP& x, const QP& p1, const QP& p2, const QP& p3)
   return x - (Q(2) * dot(x - p1, n) / dot(n, n)) * n;
 }
 
+// Four bodies B1..B4, each holding one corner K_i of a K4 of distances (all six pairs):
+// spatial (two mirror placements) or, with `planar`, K4 in the plane of K1 K2 K3 (one).
+inline Scene k4_of_distances(Rng& g, bool planar)
+{
+  Scene s = generic_points(g, {"K1", "K2", "K3", "x1", "y1", "x2", "y2", "x3", "y3", "x4", "y4"});
+  QP k4 = planar ? s.at("K1") + Q(3, 5) * (s.at("K2") - s.at("K1")) + Q(4, 7) * (s.at("K3") - s.at("K1")) : g.point();
+  s.add_point("K4", k4);
+  for (int i = 1; i <= 4; ++i) {
+    std::string n = std::to_string(i);
+    s.add_body("B" + n, {"K" + n, "x" + n, "y" + n}, random_rigid(g));
+  }
+  for (int i = 1; i <= 4; ++i) for (int j = i + 1; j <= 4; ++j) s.add_distance("K" + std::to_string(i), "K" + std::to_string(j));
+  return s;
+}
+
 // A random planted scene: `nbodies` bodies of 3 to 5 points drawn from a small pool of
 // generic points (so that bodies overlap), each in its own random frame, and 0 to 3
 // distances between points of the bodies.

@@ -214,14 +214,7 @@ void implied_bodies(Rng& g)
   }
   { // K4 of distances: two mirror variants of opposite orientation; planar K4: one variant
     for (int planar = 0; planar < 2; ++planar) {
-      Scene s = generic_points(g, {"K1", "K2", "K3", "x1", "y1", "x2", "y2", "x3", "y3", "x4", "y4"});
-      QP k4 = planar ? s.at("K1") + Q(3, 5) * (s.at("K2") - s.at("K1")) + Q(4, 7) * (s.at("K3") - s.at("K1")) : g.point();
-      s.add_point("K4", k4);
-      for (int j = 1; j <= 4; ++j) {
-        std::string n = std::to_string(j);
-        s.add_body("B" + n, {"K" + n, "x" + n, "y" + n}, random_rigid(g));
-      }
-      for (int a = 1; a <= 4; ++a) for (int b = a + 1; b <= 4; ++b) s.add_distance("K" + std::to_string(a), "K" + std::to_string(b));
+      Scene s = k4_of_distances(g, planar);
       const std::string cs = planar ? "planar K4" : "K4";
       auto c = standardized<Traits>(cs, s, &ok);
       std::size_t i = ok ? c.body_index("I1{K1,K2,K3,K4}") : c.npos;

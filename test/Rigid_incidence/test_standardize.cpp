@@ -457,14 +457,7 @@ void implied(Rng& g)
   }
   { // a K4 of distances between four bodies (spatial: two mirror variants), and a planar one
     for (int planar = 0; planar < 2; ++planar) {
-      Scene s = generic_points(g, {"K1", "K2", "K3", "x1", "y1", "x2", "y2", "x3", "y3", "x4", "y4"});
-      QP k4 = planar ? s.at("K1") + Q(3, 5) * (s.at("K2") - s.at("K1")) + Q(4, 7) * (s.at("K3") - s.at("K1")) : g.point();
-      s.add_point("K4", k4);
-      for (int i = 1; i <= 4; ++i) {
-        std::string n = std::to_string(i);
-        s.add_body("B" + n, {"K" + n, "x" + n, "y" + n}, random_rigid(g));
-      }
-      for (int i = 1; i <= 4; ++i) for (int j = i + 1; j <= 4; ++j) s.add_distance("K" + std::to_string(i), "K" + std::to_string(j));
+      Scene s = k4_of_distances(g, planar);
       auto r = check_scene<Traits>(planar ? "planar 4-clique of distances" : "K4 of distances", s);
       if (!r.threw) {
         std::size_t i = r.out.body_index("I1{K1,K2,K3,K4}");
