@@ -31,7 +31,10 @@ static const char* usage_text =
   "            sharing 3 or more points, add implied bodies, absorb what is not proper-maximal),\n"
   "            count its degrees of freedom, build the overlap graph and the optimal incidence\n"
   "            tree, select a well-formed set of incidences that contains the tree's (the\n"
-  "            Optimal Well-formed Incidence Selection Algorithm), and print the number of\n"
+  "            Optimal Well-formed Incidence Selection Algorithm), rank the system's\n"
+  "            constraints in the rigidity matroid at a random realization (generic dof,\n"
+  "            the distances holding bodies outside the covering set, the constraints in\n"
+  "            conflict when the scene is over-constrained), and print the number of\n"
   "            variables and equations of the reduced system next to the\n"
   "            6(k-1) of the naive formulation (a free rigid motion for each of the k bodies\n"
   "            of the scene, one of them fixed).\n"
@@ -45,7 +48,11 @@ static const char* usage_text =
   "                 weight]], weight, depth_sum, proven_optimal, strategy}, optimal_trees_tied,\n"
   "                 reduced_variables, naive_variables, well_formed_incidences (each\n"
   "                 {point, bodies: [a, b], coordinates: [1,2,3] or [1,2], role: \"tree\" |\n"
-  "                 \"remaining\"}), reduced_equations, redundant_incidences\n"
+  "                 \"remaining\"}), redundant_incidences, rigidity_matroid {variables,\n"
+  "                 rank, generic_dof, seed, method}, body_distances (each {body, between:\n"
+  "                 [a, b]}: the distances that hold a body outside the covering set),\n"
+  "                 conflicts (each {constraint, depends_on: [...]}: constraints the others\n"
+  "                 already fix), reduced_equations\n"
   "  --dot FILE     write the overlap graph in Graphviz DOT to FILE, the tree highlighted\n"
   "                 (render with: dot -Tsvg FILE -o graph.svg)\n"
   "  --dot-seam FILE write the seam graph of the tree's bodies in Graphviz DOT to FILE,\n"
@@ -104,6 +111,40 @@ int analyze(const Options& o)
     return out;
   };
   const std::vector<Group> selected_groups = group(wf.incidences, &wf.roles), redundant_groups = group(redundant, nullptr);
+  // The rigidity matroid at a random realization: which distances hold the bodies outside the
+  // covering set, the generic dof, and the constraints in conflict.
+  const std::vector<RI::Constraint> ks = RI::system_constraints(c, t, wf);
+  RI::Constraint_independence mi;
+  std::string matroid_note;
+  bool matroid_done = false;
+  try {
+    mi = RI::constraint_independence(c, t.covering_set, ks);
+    matroid_done = true;
+  } catch (const RI::Input_error& e) {
+    matroid_note = e.what();
+  }
+  // a dependent constraint is harmless when its circuit lies in one body's own distances
+  // (a body of 5 or more points has more distances than it needs); otherwise the scene fixes
+  // it twice: over-constrained, and its value must agree or there is no configuration
+  std::vector<std::size_t> conflicts, body_distances;
+  std::size_t implied_body_distances = 0, equations = 0;
+  if (matroid_done) {
+    for (std::size_t i = 0; i < ks.size(); ++i) {
+      if (mi.independent[i]) {
+        if (ks[i].origin != RI::Constraint::TREE_INCIDENCE) ++equations;
+        if (ks[i].origin == RI::Constraint::BODY_DISTANCE) body_distances.push_back(i);
+        continue;
+      }
+      bool own = ks[i].origin == RI::Constraint::BODY_DISTANCE;
+      for (std::size_t j : mi.circuits[i])
+        own = own && ks[j].origin == RI::Constraint::BODY_DISTANCE && ks[j].body == ks[i].body;
+      if (own) ++implied_body_distances;
+      else conflicts.push_back(i);
+    }
+  } else {
+    equations = wf.remaining_count + c.distances().size();
+  }
+  const long reduced_variables = t.weight + 3 * dof.free_points;
   if (!o.dot_seam.empty()) {
     std::ofstream dot(o.dot_seam);
     if (!dot) { std::cerr << "rigid_incidence: cannot write " << o.dot_seam << "\n"; return 1; }
@@ -162,7 +203,7 @@ int analyze(const Options& o)
     j["remaining_distances"] = remaining;
     nlohmann::ordered_json comps = nlohmann::ordered_json::array();
     for (const auto& comp : dof.components) { std::vector<std::string> n; for (auto b : comp) n.push_back(name(b)); comps.push_back(n); }
-    j["dof"] = {{"bodies", dof.bodies}, {"body_dof", dof.body_dof}, {"rdof", dof.removed}, {"distances", dof.distances},
+    j["dof"] = {{"bodies", dof.bodies}, {"free_points", dof.free_points}, {"body_dof", dof.body_dof}, {"rdof", dof.removed}, {"distances", dof.distances},
                 {"dof", dof.dof}, {"verdict", dof.verdict()}, {"connected", dof.connected}, {"components", comps}};
     nlohmann::ordered_json edges = nlohmann::ordered_json::array();
     const auto& g = og.graph();
@@ -186,9 +227,23 @@ int analyze(const Options& o)
     for (const Group& g : redundant_groups)
       redj.push_back({{"point", c.label(g.point)}, {"bodies", {name(g.a), name(g.b)}}, {"coordinates", g.coords}});
     j["well_formed_incidences"] = wfj;
-    j["reduced_equations"] = wf.remaining_count + c.distances().size();
     j["redundant_incidences"] = redj;
-    j["reduced_variables"] = t.weight;
+    nlohmann::ordered_json bd = nlohmann::ordered_json::array(), cf = nlohmann::ordered_json::array();
+    for (std::size_t i : body_distances) bd.push_back({{"body", name(ks[i].body)}, {"between", {c.label(ks[i].a), c.label(ks[i].b)}}});
+    for (std::size_t i : conflicts) {
+      std::vector<std::string> with;
+      for (std::size_t k : mi.circuits[i]) if (k != i) with.push_back(RI::describe(c, ks[k]));
+      cf.push_back({{"constraint", RI::describe(c, ks[i])}, {"depends_on", with}});
+    }
+    if (matroid_done)
+      j["rigidity_matroid"] = {{"variables", mi.variables}, {"rank", mi.rank}, {"generic_dof", mi.generic_dof()},
+                               {"seed", mi.seed}, {"method", "exact rank modulo 2^61-1 at a random realization"}};
+    else
+      j["rigidity_matroid"] = {{"skipped", matroid_note}};
+    j["body_distances"] = bd;
+    j["conflicts"] = cf;
+    j["reduced_equations"] = equations;
+    j["reduced_variables"] = reduced_variables;
     j["naive_variables"] = naive;
     std::cout << j.dump(2) << "\n";
     return 0;
@@ -213,7 +268,12 @@ int analyze(const Options& o)
   }
   for (const auto& d : c.distances())
     std::cout << "  distance " << c.label(d.a) << "-" << c.label(d.b) << " (" << d.name << ")\n";
-  std::cout << "\ndof count: 6(k-1) = " << dof.body_dof << ", rdof = " << dof.removed << ", distances = " << dof.distances
+  if (dof.free_points > 0) {
+    std::cout << "  free points (in no body, held only by distances):";
+    for (std::size_t p : c.free_points()) std::cout << " " << c.label(p);
+    std::cout << "\n";
+  }
+  std::cout << "\ndof count: 6(k-1)" << (dof.free_points > 0 ? " + 3 (free points)" : "") << " = " << dof.body_dof << ", rdof = " << dof.removed << ", distances = " << dof.distances
             << ", dof = " << dof.dof << ": " << dof.verdict() << " by the count";
   if (!dof.connected) std::cout << "; NOT CONNECTED: " << dof.components.size() << " separate parts";
   std::cout << "\n";
@@ -254,15 +314,43 @@ int analyze(const Options& o)
     for (int p : g.coords) std::cout << " " << p;
     std::cout << "\n";
   }
-  std::cout << "\nreduced system: " << t.weight << " variables, against 6(k-1) = " << naive
+  if (matroid_done) {
+    std::cout << "\nrigidity matroid at a random realization (exact rank modulo 2^61-1): rank " << mi.rank << " of "
+              << mi.variables << " variables, generic dof " << mi.generic_dof()
+              << (mi.generic_dof() == 0 ? " (generically rigid)" : " (flexible)") << "\n";
+    if (!t.non_covering.empty()) {
+      std::cout << "  distances holding the bodies outside the covering set: " << body_distances.size();
+      if (implied_body_distances) std::cout << " (" << implied_body_distances << " more follow from those bodies' own rigidity)";
+      std::cout << "\n";
+      for (std::size_t i : body_distances) std::cout << "    " << RI::describe(c, ks[i]) << "\n";
+    }
+    if (!conflicts.empty()) {
+      std::cout << "  CONFLICTS: " << conflicts.size() << " constraint" << (conflicts.size() > 1 ? "s" : "")
+                << " the others already fix (over-constrained: each value must agree with the others exactly,"
+                << " or the scene has no configuration):\n";
+      for (std::size_t i : conflicts) {
+        std::cout << "    " << RI::describe(c, ks[i]) << "\n      depends on:";
+        for (std::size_t k : mi.circuits[i]) if (k != i) std::cout << "\n        " << RI::describe(c, ks[k]);
+        std::cout << "\n";
+      }
+    }
+  } else {
+    std::cout << "\nrigidity matroid: skipped (" << matroid_note << ")\n";
+  }
+  std::cout << "\nreduced system: " << reduced_variables << " variables";
+  if (dof.free_points > 0) std::cout << " (" << t.weight << " of the tree, 3 per free point)";
+  std::cout << ", against 6(k-1) = " << naive
             << " for the naive formulation (a free rigid motion for each of the k = " << scene.bodies.size()
-            << " bodies of the scene, one fixed); " << wf.remaining_count + c.distances().size() << " equations ("
-            << wf.remaining_count << " remaining incidences, " << c.distances().size()
-            << " remaining distances; the distances rigidifying bodies outside the covering set come with the reduced system)\n";
-  if (!dof.connected || dof.dof != 0)
-    std::cout << "  note: the scene is " << (dof.connected ? "" : "not connected and ") << dof.verdict()
-              << " by the dof count (dof = " << dof.dof << "): the tree covers the shared points, but its variables"
-              << " and the remaining equations will not form a square system\n";
+            << " bodies of the scene, one fixed); " << equations << " equations (" << wf.remaining_count
+            << " remaining incidences, " << c.distances().size() << " remaining distances"
+            << (matroid_done ? ", " + std::to_string(body_distances.size()) + " distances holding bodies outside the covering set"
+                             : "; the distances holding bodies outside the covering set are not counted")
+            << (conflicts.empty() ? "" : ", the conflicting ones left out") << ")\n";
+  if (!dof.connected || (matroid_done ? (mi.generic_dof() != 0 || !conflicts.empty()) : dof.dof != 0))
+    std::cout << "  note: the scene is " << (dof.connected ? "" : "not connected and ")
+              << (matroid_done ? (mi.generic_dof() > 0 ? "under-constrained" : "over-constrained")
+                               : dof.verdict() + " by the dof count")
+              << ": the variables and the equations will not form a square system with isolated solutions\n";
   return 0;
 }
 

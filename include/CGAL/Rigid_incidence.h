@@ -17,6 +17,7 @@
 #include <CGAL/Rigid_incidence/is_well_formed.h>
 #include <CGAL/Rigid_incidence/well_formed_incidences.h>
 #include <CGAL/Rigid_incidence/optimal_incidence_tree.h>
+#include <CGAL/Rigid_incidence/rigidity_matroid.h>
 #include <CGAL/Rigid_incidence/IO/read_scene.h>
 #include <CGAL/Rigid_incidence/IO/write_dot.h>
 

@@ -3,7 +3,8 @@
 //
 // Checks the output of `rigid_incidence analyze SCENE --json` (run by cmake/cli.cmake):
 //   cli_json_check FILE [--bodies N] [--implied N] [--weight W] [--depth-sum D] [--root NAME]
-//                       [--reduced R] [--naive V] [--ties T] [--covering N]
+//                       [--reduced R] [--naive V] [--ties T] [--covering N] [--well-formed N]
+//                       [--remaining N] [--equations N] [--conflicts N] [--generic-dof N] [--body-distances N]
 // The output must be valid JSON with every documented key of the right type, and consistent in
 // itself, recomputed here from the listed bodies alone: the tree edges form a spanning tree of
 // the covering set rooted at `root`; each edge weight is the overlap weight of its two bodies
@@ -133,7 +134,10 @@ int main(int argc, char** argv)
   }
   CHECK(weight == t["weight"].get<long>(), "weight " << t["weight"] << " but the edges sum to " << weight);
   CHECK(depth_sum == t["depth_sum"].get<long>(), "depth_sum " << t["depth_sum"] << " but the depths sum to " << depth_sum);
-  CHECK(j["reduced_variables"].get<long>() == weight, "reduced_variables " << j["reduced_variables"] << " != tree weight");
+  // reduced variables: the tree's weight, and 3 per free point (a point in no body)
+  long free_points = has(j, "dof", T::object) && has(j["dof"], "free_points", T::number_integer) ? j["dof"]["free_points"].get<long>() : 0;
+  CHECK(j["reduced_variables"].get<long>() == weight + 3 * free_points,
+        "reduced_variables " << j["reduced_variables"] << " != tree weight + 3 (free points)");
   // naive formulation: a free rigid motion for each of the k bodies of the scene, one fixed
   // (--help; commit f92bedc); the scene's k is scene.user_bodies
   if (has(j, "scene", T::object) && has(j["scene"], "user_bodies", T::number_integer)) {
@@ -178,11 +182,29 @@ int main(int argc, char** argv)
   num("--covering", long(cover.size()));
   num("--well-formed", wf_total);
   num("--remaining", wf_remaining);
+  // the rigidity matroid (issue 4's conflicts, issue 5's distances for bodies outside the cover)
+  bool matroid = has(j, "rigidity_matroid", T::object) && has(j["rigidity_matroid"], "generic_dof", T::number_integer) &&
+                 has(j, "conflicts", T::array) && has(j, "body_distances", T::array) && has(j, "reduced_equations", T::number_integer);
+  CHECK(matroid, "rigidity_matroid {generic_dof}, conflicts, body_distances or reduced_equations missing");
+  if (matroid) {
+    const auto& m = j["rigidity_matroid"];
+    CHECK(m["generic_dof"].get<long>() == m["variables"].get<long>() - m["rank"].get<long>(), "generic_dof != variables - rank");
+    for (const auto& k : j["conflicts"])
+      CHECK(has(k, "constraint", T::string) && has(k, "depends_on", T::array) && !k["depends_on"].empty(),
+            "a conflict lacks constraint or depends_on");
+    for (const auto& k : j["body_distances"])
+      CHECK(has(k, "body", T::string) && has(k, "between", T::array) && k["between"].size() == 2, "a body distance lacks body or between");
+    num("--equations", j["reduced_equations"].get<long>());
+    num("--conflicts", long(j["conflicts"].size()));
+    num("--generic-dof", m["generic_dof"].get<long>());
+    num("--body-distances", long(j["body_distances"].size()));
+  }
   if (expect.count("--root")) CHECK(root == expect["--root"], "root: got " << root << ", expected " << expect["--root"]);
   for (const auto& [k, v] : expect) {
     static const std::set<std::string> known = {"--bodies", "--implied", "--weight", "--depth-sum", "--root",
                                                 "--reduced", "--naive", "--ties", "--covering",
-                                                "--well-formed", "--remaining"};
+                                                "--well-formed", "--remaining", "--equations", "--conflicts",
+                                                "--generic-dof", "--body-distances"};
     if (!known.count(k)) { std::cerr << "cli_json_check: unknown option " << k << "\n"; return 2; }
   }
   std::cout << "cli_json_check " << argv[1] << ": " << failures << " failures\n";

@@ -117,12 +117,18 @@ std::vector<std::vector<int>> pair_weights(const Body_points& b)
 }
 
 // Per shared point (in two or more bodies): the bodies through it.
+// The points a distance names (set by points_of() for the collection at hand): the tree must
+// cover them as well as the shared points, since a distance is an equation between them.
+static std::set<std::size_t> named_by_distances;
+
+// Per point to cover (shared, or named by a distance): the bodies through it.
 std::vector<std::vector<std::size_t>> shared_point_bodies(const Body_points& b)
 {
   std::map<std::size_t, std::vector<std::size_t>> through;
   for (std::size_t i = 0; i < b.size(); ++i) for (std::size_t p : b[i]) through[p].push_back(i);
   std::vector<std::vector<std::size_t>> r;
-  for (const auto& t : through) if (t.second.size() >= 2) r.push_back(t.second);
+  for (const auto& t : through)
+    if (t.second.size() >= 2 || named_by_distances.count(t.first)) r.push_back(t.second);
   return r;
 }
 
@@ -214,6 +220,8 @@ Body_points points_of(const RI::Rigid_body_collection<Traits>& c)
 {
   Body_points b;
   for (std::size_t i = 0; i < c.number_of_bodies(); ++i) b.push_back(c.body(i).points);
+  named_by_distances.clear();
+  for (const auto& d : c.distances()) { named_by_distances.insert(d.a); named_by_distances.insert(d.b); }
   return b;
 }
 

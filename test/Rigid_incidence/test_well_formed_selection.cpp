@@ -17,6 +17,7 @@
 
 #include "incidence_oracles.h"
 #include "random_collections.h"
+#include "test_check.h"
 
 #include <iostream>
 #include <map>
@@ -25,8 +26,6 @@
 namespace RI = CGAL::Rigid_incidence;
 using namespace incidence_oracles;
 
-static int failures = 0, checks = 0;
-#define CHECK(cond, msg) do { ++checks; if (!(cond)) { ++failures; std::cerr << "FAIL line " << __LINE__ << ": " << msg << "\n"; } } while (0)
 
 template <class C>
 void check_selection(const C& c, const RI::Incidence_tree& t, const std::string& k, CGAL::Random& rng, bool rank_check = true)

@@ -252,6 +252,35 @@ public:
     return x;
   }
 
+  /// The points in no body: after `standardize()` the far ends of bars, held only by
+  /// distances. Each has 3 dof of its own.
+  std::vector<std::size_t> free_points() const
+  {
+    std::vector<bool> in(labels_.size(), false);
+    for (const Body& b : bodies_) for (std::size_t p : b.points) in[p] = true;
+    std::vector<std::size_t> x;
+    for (std::size_t p = 0; p < in.size(); ++p) if (!in[p]) x.push_back(p);
+    return x;
+  }
+
+  /// The points an incidence tree must cover: the shared points and the points of bodies
+  /// that a distance names (a distance is an equation between two points, so their bodies
+  /// must be placed by the tree), sorted.
+  std::vector<std::size_t> points_to_cover() const
+  {
+    std::vector<int> count(labels_.size(), 0);
+    for (const Body& b : bodies_) for (std::size_t p : b.points) ++count[p];
+    std::vector<bool> take(labels_.size(), false);
+    for (std::size_t p = 0; p < count.size(); ++p) take[p] = count[p] >= 2;
+    for (const Distance& d : distances_) {
+      if (count[d.a] > 0) take[d.a] = true;
+      if (count[d.b] > 0) take[d.b] = true;
+    }
+    std::vector<std::size_t> x;
+    for (std::size_t p = 0; p < take.size(); ++p) if (take[p]) x.push_back(p);
+    return x;
+  }
+
   /// The points common to bodies `i` and `j` (global indices, sorted).
   std::vector<std::size_t> common_points(std::size_t i, std::size_t j) const
   {

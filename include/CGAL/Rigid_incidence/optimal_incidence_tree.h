@@ -152,7 +152,7 @@ public:
         if (og_.shared_points(i, j).size() >= 3)
           throw Input_error("optimal_incidence_tree: bodies '" + c.body(i).name + "' and '" + c.body(j).name +
                             "' share 3 or more points: not a standard collection (call standardize() first)");
-    for (std::size_t p : c.shared_points()) {
+    for (std::size_t p : c.points_to_cover()) {
       std::vector<std::size_t> through;
       for (std::size_t i = 0; i < n_; ++i) if (c.body(i).contains(p)) through.push_back(i);
       cover_.push_back(through);
@@ -185,7 +185,7 @@ private:
   const Overlap_graph& og_;
   Incidence_tree_options opt_;
   std::size_t n_;
-  std::vector<std::vector<std::size_t>> cover_; // per shared point: the bodies through it
+  std::vector<std::vector<std::size_t>> cover_; // per point to cover: the bodies through it
   std::vector<bool> implied_;
   std::vector<std::vector<std::size_t>> candidates_;
   long best_w_ = std::numeric_limits<long>::max();
@@ -464,7 +464,9 @@ private:
 \ingroup PkgRigidIncidenceRef
 \brief The optimal incidence tree of a standard collection (Section 4.1, Part 1).
 
-First criterion: over all covering sets S of the shared points, the minimum total weight
+First criterion: over all covering sets S of the shared points and of the points that
+distances name (`Rigid_body_collection::points_to_cover()`: a distance is an equation between
+points the tree must place), the minimum total weight
 of a spanning tree of the overlap graph induced by S (weights w(2)=1, w(1)=3, w(0)=6).
 Second: over all minimum spanning trees of all optimal covering sets and all their roots,
 the minimum sum of depths. Remaining ties are broken, in this order, by fewer implied

@@ -106,12 +106,13 @@ long rdof(const Rigid_body_collection<Traits>& c, const std::vector<std::size_t>
 struct Dof_count
 {
   long bodies = 0;          ///< number of bodies k
-  long body_dof = 0;        ///< 6 (k - 1): the dof of k free bodies, one of them fixed
+  long free_points = 0;     ///< points in no body (the far ends of bars), 3 dof each
+  long body_dof = 0;        ///< 6 (k - 1) + 3 (free points): the dof of k free bodies, one of them fixed, and the free points
   long removed = 0;         ///< rdof(D, D): removed by the shared points
   long distances = 0;       ///< distances not absorbed into a body: one equation each
   long dof = 0;             ///< body_dof - removed - distances
-  bool connected = true;    ///< the bodies form one connected scene
-  std::vector<std::vector<std::size_t>> components; ///< body indices per connected part
+  bool connected = true;    ///< the bodies and free points form one connected scene
+  std::vector<std::vector<std::size_t>> components; ///< body indices per connected part (free points are not listed)
 
   /// "well-constrained", "under-constrained" or "over-constrained" by the count.
   std::string verdict() const
@@ -123,11 +124,13 @@ struct Dof_count
 
 /*!
 \ingroup PkgRigidIncidenceRef
-\brief Counts the dof of a (standard) collection: 6(k-1) - rdof(D, D) - (number of distances).
+\brief Counts the dof of a (standard) collection: 6(k-1) + 3 f - rdof(D, D) - (number of
+distances), with f the points in no body (`Rigid_body_collection::free_points()`).
 
 The count is necessary, not sufficient, for generic rigidity (deciding body-multi-pin
-rigidity in general is as hard as 3D bar-and-joint rigidity, see the papers). Bodies are
-connected through shared points and distances.
+rigidity in general is as hard as 3D bar-and-joint rigidity, see the papers); the rank of
+the rigidity matroid (`constraint_independence()`) decides it at a generic realization.
+Bodies are connected through shared points and distances.
 */
 template <class Traits>
 Dof_count dof_count(const Rigid_body_collection<Traits>& c)
@@ -136,21 +139,29 @@ Dof_count dof_count(const Rigid_body_collection<Traits>& c)
   const std::size_t k = c.number_of_bodies();
   std::vector<std::size_t> all(k);
   for (std::size_t i = 0; i < k; ++i) all[i] = i;
+  const std::vector<std::size_t> free = c.free_points();
   r.bodies = long(k);
-  r.body_dof = 6 * (long(k) - 1);
+  r.free_points = long(free.size());
+  r.body_dof = 6 * (long(k) - 1) + 3 * r.free_points;
   r.removed = rdof(c, all);
   r.distances = long(c.distances().size());
   r.dof = r.body_dof - r.removed - r.distances;
-  boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS> g(k);
+  // vertices: the bodies, then the free points
+  std::vector<std::size_t> vertex_of(c.number_of_points(), std::size_t(-1));
+  for (std::size_t f = 0; f < free.size(); ++f) vertex_of[free[f]] = k + f;
+  boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS> g(k + free.size());
   std::vector<std::vector<std::size_t>> through(c.number_of_points());
   for (std::size_t i = 0; i < k; ++i) for (std::size_t p : c.body(i).points) through[p].push_back(i);
+  for (std::size_t p = 0; p < through.size(); ++p) if (through[p].empty()) through[p].push_back(vertex_of[p]);
   for (const auto& t : through) for (std::size_t a = 1; a < t.size(); ++a) boost::add_edge(t[0], t[a], g);
-  for (const auto& d : c.distances())
-    if (!through[d.a].empty() && !through[d.b].empty()) boost::add_edge(through[d.a][0], through[d.b][0], g);
-  std::vector<int> comp(k);
-  int nc = k ? boost::connected_components(g, comp.data()) : 0;
+  for (const auto& d : c.distances()) boost::add_edge(through[d.a][0], through[d.b][0], g);
+  std::vector<int> comp(k + free.size());
+  int nc = comp.empty() ? 0 : boost::connected_components(g, comp.data());
   r.components.assign(std::size_t(nc), {});
   for (std::size_t i = 0; i < k; ++i) r.components[std::size_t(comp[i])].push_back(i);
+  r.components.erase(std::remove_if(r.components.begin(), r.components.end(),
+                                    [](const std::vector<std::size_t>& v) { return v.empty(); }),
+                     r.components.end());
   r.connected = nc <= 1;
   return r;
 }

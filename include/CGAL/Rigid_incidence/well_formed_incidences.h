@@ -15,7 +15,9 @@
 #include <CGAL/Rigid_incidence/optimal_incidence_tree.h>
 
 #include <algorithm>
+#include <map>
 #include <set>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -196,6 +198,112 @@ Incidence_set redundant_incidences(const Rigid_body_collection<Traits>& c, const
           if (!s.incidences.contains(inc)) out.push_back(inc);
         }
   return Incidence_set(out);
+}
+
+namespace internal {
+
+// The vertices (point, body_a) and (point, body_b) of `g`, checked against the selection.
+inline std::pair<std::size_t, std::size_t> redundant_edge_vertices(const Seam_graph& g, const Well_formed_selection& s,
+                                                                   std::size_t point, std::size_t body_a,
+                                                                   std::size_t body_b, const char* where)
+{
+  if (g.bodies() != s.bodies)
+    throw Input_error(std::string(where) + ": the seam graph is not the one of the selection's bodies");
+  std::size_t a = g.vertex(point, body_a), b = g.vertex(point, body_b);
+  if (a == Seam_graph::npos || b == Seam_graph::npos || a == b)
+    throw Input_error(std::string(where) + ": not a point seam edge of the seam graph (two bodies of D through a shared point)");
+  return {a, b};
+}
+
+inline bool same_seam_edge(const Well_formed_selection::Seam_edge& e, std::size_t point, std::size_t body_a, std::size_t body_b)
+{
+  return e.point == point && ((e.body_a == body_a && e.body_b == body_b) || (e.body_a == body_b && e.body_b == body_a));
+}
+
+} // namespace internal
+
+/*!
+\ingroup PkgRigidIncidenceRef
+\brief Why coordinates 1 and 2 of the point seam edge (point, body_a) - (point, body_b) are
+redundant in the selection `s`: the point-seam cycle the edge closes with F*
+(`s.point_seam_edges`).
+
+The selection takes coordinates 1 and 2 of the point seam edges of F*, a maximal extension
+of the seam tree that closes no point-seam cycle. The incidences (point, {body_a, body_b}, 1)
+and (point, {body_a, body_b}, 2) of an edge outside F* are redundant because the edge closes
+a point-seam cycle with F*: this cycle is returned as the `POINT` step
+(point, body_a) -> (point, body_b) followed by the path of F* edges among the copies of
+`point` back to (point, body_a) (found by breadth-first search, so the cycle is simple).
+Empty if the edge is in F*. `g` is the seam graph of `s.bodies`, e.g.
+`Seam_graph(c, s.bodies)` for the collection `c` of the selection.
+\throws Input_error if `g` is not the seam graph of `s.bodies`, if the edge is not a point
+seam edge of `g`, or if F* does not join its two copies (`s` is not a selection of this
+package).
+*/
+inline std::vector<Seam_step> point_seam_cycle(const Seam_graph& g, const Well_formed_selection& s, std::size_t point,
+                                               std::size_t body_a, std::size_t body_b)
+{
+  const std::pair<std::size_t, std::size_t> ab = internal::redundant_edge_vertices(g, s, point, body_a, body_b, "point_seam_cycle");
+  std::map<std::size_t, std::vector<std::size_t>> adj; // F* among the copies of `point`
+  for (const auto& e : s.point_seam_edges) {
+    if (e.point != point) continue;
+    if (internal::same_seam_edge(e, point, body_a, body_b)) return {};
+    std::size_t x = g.vertex(point, e.body_a), y = g.vertex(point, e.body_b);
+    if (x == Seam_graph::npos || y == Seam_graph::npos)
+      throw Input_error("point_seam_cycle: an edge of F* is not a point seam edge of the seam graph");
+    adj[x].push_back(y);
+    adj[y].push_back(x);
+  }
+  // breadth-first search from (point, body_b) to (point, body_a)
+  std::map<std::size_t, std::size_t> from{{ab.second, ab.second}};
+  std::vector<std::size_t> queue{ab.second};
+  for (std::size_t q = 0; q < queue.size() && !from.count(ab.first); ++q)
+    for (std::size_t y : adj[queue[q]])
+      if (from.emplace(y, queue[q]).second) queue.push_back(y);
+  if (!from.count(ab.first))
+    throw Input_error("point_seam_cycle: F* does not join the two copies (not a maximal point-seam-cycle-avoiding extension)");
+  std::vector<Seam_step> out{Seam_step{Seam_step::POINT, ab.first, ab.second}};
+  std::vector<Seam_step> back; // from (point, body_a) back to (point, body_b), reversed below
+  for (std::size_t v = ab.first; v != ab.second; v = from[v]) back.push_back(Seam_step{Seam_step::POINT, from[v], v});
+  out.insert(out.end(), back.rbegin(), back.rend());
+  return out;
+}
+
+/*!
+\ingroup PkgRigidIncidenceRef
+\brief Why coordinate 3 of the point seam edge (point, body_a) - (point, body_b) is redundant
+in the selection `s`: the seam cycle the edge closes with the seam tree F1 (`s.seam_tree`).
+
+The selection takes coordinate 3 of the point seam edges of the seam tree F1 only. The
+incidence (point, {body_a, body_b}, 3) of an edge outside F1 (whether or not the edge is in
+F*, whose coordinates 1 and 2 are taken) is redundant because its two copies are already
+joined by a seam path of F1, so the edge closes a seam cycle. This function rebuilds a
+`Seam_connectivity` from the edges of F1 and returns that cycle
+(`Seam_connectivity::seam_cycle()`): the `POINT` step (point, body_a) -> (point, body_b)
+followed by a seam path of F1 back, whose `POINT` steps are edges of F1 and whose `LINE`
+steps come in partner pairs. Empty if the edge is in F1. `g` is the seam graph of
+`s.bodies`. Costs about a greedy completion of the seam graph plus the cycle's length.
+\throws Input_error if `g` is not the seam graph of `s.bodies`, if the edge is not a point
+seam edge of `g`, if F1 has a seam cycle or does not join the edge's copies (`s` is not a
+selection of this package), or if the cycle is longer than
+`Seam_connectivity::default_max_steps`.
+*/
+inline std::vector<Seam_step> seam_cycle_of(const Seam_graph& g, const Well_formed_selection& s, std::size_t point,
+                                             std::size_t body_a, std::size_t body_b)
+{
+  const std::pair<std::size_t, std::size_t> ab = internal::redundant_edge_vertices(g, s, point, body_a, body_b, "seam_cycle_of");
+  for (const auto& e : s.seam_tree)
+    if (internal::same_seam_edge(e, point, body_a, body_b)) return {};
+  Seam_connectivity conn(g);
+  for (const auto& e : s.seam_tree) {
+    std::size_t x = g.vertex(e.point, e.body_a), y = g.vertex(e.point, e.body_b);
+    if (x == Seam_graph::npos || y == Seam_graph::npos)
+      throw Input_error("seam_cycle_of: an edge of the seam tree is not a point seam edge of the seam graph");
+    if (!conn.add_point_seam_edge(x, y)) throw Input_error("seam_cycle_of: the seam tree has a seam cycle");
+  }
+  if (!conn.joined(ab.first, ab.second))
+    throw Input_error("seam_cycle_of: the seam tree does not join the two copies (not a seam tree)");
+  return conn.seam_cycle(ab.first, ab.second);
 }
 
 } // namespace Rigid_incidence

@@ -164,12 +164,16 @@ if(TARGET rigid_incidence)
   # --- --json, checked by a small program
   add_executable(cli_json_check ${CMAKE_CURRENT_LIST_DIR}/../cli_json_check.cpp)
   target_link_libraries(cli_json_check PRIVATE nlohmann_json::nlohmann_json)
-  set(_ri_expect_tetra "--bodies|7|--implied|4|--weight|3|--depth-sum|3|--root|I1{P12,P23,P31}|--reduced|3|--naive|12|--covering|4|--well-formed|15|--remaining|0")
+  set(_ri_expect_tetra "--bodies|7|--implied|4|--weight|3|--depth-sum|3|--root|I1{P12,P23,P31}|--reduced|3|--naive|12|--covering|4|--well-formed|15|--remaining|0|--equations|3|--body-distances|3|--conflicts|0|--generic-dof|0")
   # naive_variables = 6(k-1) over the k bodies of the scene (3 for tetra: 12), as the tool defines
   # it since commit f92bedc; over the covering set (Section 4.2 of the paper) it would be 18.
   set(_ri_expect_tetra_i "${_ri_expect_tetra}")
-  set(_ri_expect_quad "--bodies|9|--weight|4|--depth-sum|4|--root|c5|--reduced|4|--naive|24|--well-formed|20|--remaining|0")
-  set(_ri_expect_pent "--bodies|6|--weight|4|--depth-sum|6|--root|c5|--ties|6|--reduced|4|--naive|24|--well-formed|23|--remaining|3")
+  set(_ri_expect_quad "--bodies|9|--weight|4|--depth-sum|4|--root|c5|--reduced|4|--naive|24|--well-formed|20|--remaining|0|--equations|4|--conflicts|0|--generic-dof|0")
+  set(_ri_expect_pent "--bodies|6|--weight|4|--depth-sum|6|--root|c5|--ties|6|--reduced|4|--naive|24|--well-formed|23|--remaining|3|--equations|4|--conflicts|0|--generic-dof|0")
+  # over-constrained: a ring of four hinges (rdof 20 > 18), two distances of c4 in conflict
+  set(_ri_expect_hinge_ring "--weight|2|--reduced|2|--equations|2|--body-distances|2|--conflicts|2|--generic-dof|0")
+  # a free point: the bar's far end E (3 variables), held by one distance: 2 dof
+  set(_ri_expect_bar_end "--weight|1|--reduced|4|--equations|2|--conflicts|0|--generic-dof|2")
 
   file(GLOB _scenes ${RIGID_INCIDENCE_DATA_DIR}/*.json)
   foreach(_scene ${_scenes})
