@@ -11,6 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <fstream>
 #include <iostream>
 #include <string>
@@ -48,7 +49,9 @@ static const char* usage_text =
   "                 weight]], weight, depth_sum, proven_optimal, strategy}, optimal_trees_tied,\n"
   "                 reduced_variables, naive_variables, well_formed_incidences (each\n"
   "                 {point, bodies: [a, b], coordinates: [1,2,3] or [1,2], role: \"tree\" |\n"
-  "                 \"remaining\"}), redundant_incidences, rigidity_matroid {variables,\n"
+  "                 \"remaining\"}), redundant_incidences (each {point, bodies,\n"
+  "                 coordinates, point_seam_cycle and/or seam_cycle: the cycle its edge\n"
+  "                 closes, as point@body copies}), rigidity_matroid {variables,\n"
   "                 rank, generic_dof, seed, method}, body_distances (each {body, between:\n"
   "                 [a, b]}: the distances that hold a body outside the covering set),\n"
   "                 conflicts (each {constraint, depends_on: [...]}: constraints the others\n"
@@ -111,6 +114,28 @@ int analyze(const Options& o)
     return out;
   };
   const std::vector<Group> selected_groups = group(wf.incidences, &wf.roles), redundant_groups = group(redundant, nullptr);
+  // Why each redundant incidence was left out (Section 5): coordinates 1 and 2 of an edge
+  // that closes a point-seam cycle of F*, coordinate 3 of an edge that closes a seam cycle of
+  // the seam tree F1. A cycle is written as the copies (point@body) it passes through.
+  const RI::Seam_graph seam(c, wf.bodies);
+  auto copies_of = [&](const std::vector<RI::Seam_step>& cyc) {
+    std::vector<std::string> out;
+    for (const auto& st : cyc) {
+      const auto& v = seam.vertices()[st.from];
+      out.push_back(c.label(v.point) + "@" + c.body(v.body).name);
+    }
+    return out;
+  };
+  struct Reason { std::vector<std::string> point_seam_cycle, seam_cycle; };
+  std::vector<Reason> reasons;
+  for (const Group& g : redundant_groups) {
+    Reason r;
+    bool has12 = std::find(g.coords.begin(), g.coords.end(), 1) != g.coords.end();
+    bool has3 = std::find(g.coords.begin(), g.coords.end(), 3) != g.coords.end();
+    if (has12) r.point_seam_cycle = copies_of(RI::point_seam_cycle(seam, wf, g.point, g.a, g.b));
+    if (has3) r.seam_cycle = copies_of(RI::seam_cycle_of(seam, wf, g.point, g.a, g.b));
+    reasons.push_back(r);
+  }
   // The rigidity matroid at a random realization: which distances hold the bodies outside the
   // covering set, the generic dof, and the constraints in conflict.
   const std::vector<RI::Constraint> ks = RI::system_constraints(c, t, wf);
@@ -224,8 +249,13 @@ int analyze(const Options& o)
     for (const Group& g : selected_groups)
       wfj.push_back({{"point", c.label(g.point)}, {"bodies", {name(g.a), name(g.b)}}, {"coordinates", g.coords},
                      {"role", g.tree ? "tree" : "remaining"}});
-    for (const Group& g : redundant_groups)
-      redj.push_back({{"point", c.label(g.point)}, {"bodies", {name(g.a), name(g.b)}}, {"coordinates", g.coords}});
+    for (std::size_t k = 0; k < redundant_groups.size(); ++k) {
+      const Group& g = redundant_groups[k];
+      nlohmann::ordered_json rj = {{"point", c.label(g.point)}, {"bodies", {name(g.a), name(g.b)}}, {"coordinates", g.coords}};
+      if (!reasons[k].point_seam_cycle.empty()) rj["point_seam_cycle"] = reasons[k].point_seam_cycle;
+      if (!reasons[k].seam_cycle.empty()) rj["seam_cycle"] = reasons[k].seam_cycle;
+      redj.push_back(rj);
+    }
     j["well_formed_incidences"] = wfj;
     j["redundant_incidences"] = redj;
     nlohmann::ordered_json bd = nlohmann::ordered_json::array(), cf = nlohmann::ordered_json::array();
@@ -309,10 +339,22 @@ int analyze(const Options& o)
     std::cout << (g.tree ? "  (tree)" : "  (remaining)") << "\n";
   }
   std::cout << "redundant incidences left out: " << redundant.size() << "\n";
-  for (const Group& g : redundant_groups) {
+  if (!redundant_groups.empty())
+    std::cout << "  (coordinates 1 2: the point seam edge closes a point-seam cycle of the selection;"
+              << " coordinate 3: it closes a seam cycle of the seam tree; cycles as point@body)\n";
+  for (std::size_t k = 0; k < redundant_groups.size(); ++k) {
+    const Group& g = redundant_groups[k];
     std::cout << "  " << c.label(g.point) << "  " << name(g.a) << " = " << name(g.b) << "  coordinates";
     for (int p : g.coords) std::cout << " " << p;
     std::cout << "\n";
+    auto show = [](const char* what, const std::vector<std::string>& cyc) {
+      if (cyc.empty()) return;
+      std::cout << "      " << what << ":";
+      for (const auto& x : cyc) std::cout << " " << x;
+      std::cout << " (back to " << cyc.front() << ")\n";
+    };
+    show("1 2, point-seam cycle", reasons[k].point_seam_cycle);
+    show("3, seam cycle", reasons[k].seam_cycle);
   }
   if (matroid_done) {
     std::cout << "\nrigidity matroid at a random realization (exact rank modulo 2^61-1): rank " << mi.rank << " of "

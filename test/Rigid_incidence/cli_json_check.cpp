@@ -163,6 +163,23 @@ int main(int argc, char** argv)
       wf_total += n;
       (role == "tree" ? wf_tree : wf_remaining) += n;
     }
+    // every redundant incidence says which cycle its point seam edge closes: a point-seam
+    // cycle (3 or more copies of its point) for coordinates 1, 2; a seam cycle for 3
+    for (const auto& r : j["redundant_incidences"]) {
+      bool c12 = false, c3 = false;
+      if (has(r, "coordinates", T::array))
+        for (const auto& p : r["coordinates"]) { c12 = c12 || p == 1 || p == 2; c3 = c3 || p == 3; }
+      if (c12) {
+        bool ok = has(r, "point_seam_cycle", T::array) && r["point_seam_cycle"].size() >= 3;
+        CHECK(ok, "redundant incidence of " << r.value("point", std::string("?")) << ": no point-seam cycle of 3 or more copies");
+        if (ok)
+          for (const auto& x : r["point_seam_cycle"])
+            CHECK(x.is_string() && x.get<std::string>().rfind(r["point"].get<std::string>() + "@", 0) == 0,
+                  "a point-seam cycle passes through another point: " << x);
+      }
+      if (c3) CHECK(has(r, "seam_cycle", T::array) && r["seam_cycle"].size() >= 3,
+                    "redundant coordinate 3 of " << r.value("point", std::string("?")) << ": no seam cycle");
+    }
     // every tree edge eliminates 3 incidences per shared point minus 1 per shared pair: 6 - weight
     long eliminated = 0;
     for (const auto& e : t["edges"]) eliminated += 6 - e[2].get<long>();
