@@ -18,6 +18,9 @@
 #include <CGAL/Rigid_incidence/well_formed_incidences.h>
 #include <CGAL/Rigid_incidence/optimal_incidence_tree.h>
 #include <CGAL/Rigid_incidence/rigidity_matroid.h>
+#include <CGAL/Rigid_incidence/Polynomial_system.h>
+#include <CGAL/Rigid_incidence/incidence_tree_parametrization.h>
+#include <CGAL/Rigid_incidence/Reduced_system.h>
 #include <CGAL/Rigid_incidence/IO/read_scene.h>
 #include <CGAL/Rigid_incidence/IO/write_dot.h>
 

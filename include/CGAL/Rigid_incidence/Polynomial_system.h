@@ -1,0 +1,241 @@
+// Copyright (c) 2026 Rigid_incidence contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// A small sparse multivariate polynomial and a polynomial system over a box: the general
+// layer (no bodies, no scenes) that the reduced system produces and the solver consumes.
+//
+// Why not CGAL::Polynomial: it is recursive and dense in each variable (a polynomial in x0
+// whose coefficients are polynomials in x1, ...), so an equation in 2 of 8 variables still
+// nests through all 8, and its coefficient operations assume a field or a UFD, which interval
+// types are not. The reduced systems are small (a few variables per equation, degree at most
+// a few per variable) and the solver converts each equation to a tensor-product Bernstein
+// array over the variables it involves; what it needs from this type is the exponent /
+// coefficient list, the variables involved and the degree in each. A sorted map from
+// exponent vectors to coefficients does exactly that and works for any number type with
+// + - * (Gmpq, CGAL::Interval_nt, CGAL::Gmpfi, double).
+
+#ifndef CGAL_RIGID_INCIDENCE_POLYNOMIAL_SYSTEM_H
+#define CGAL_RIGID_INCIDENCE_POLYNOMIAL_SYSTEM_H
+
+#include <CGAL/Interval_nt.h>
+#include <CGAL/Interval_traits.h>
+#include <CGAL/Rigid_incidence/Input_error.h>
+
+#include <algorithm>
+#include <map>
+#include <ostream>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Rigid_incidence {
+
+namespace internal {
+// A coefficient that is certainly zero: exact zero, or the degenerate interval [0, 0].
+template <class NT> bool certainly_zero(const NT& x)
+{
+  typedef CGAL::Interval_traits<NT> IT;
+  if constexpr (std::is_same<typename IT::Is_interval, CGAL::Tag_true>::value) {
+    typename IT::Lower lower;
+    typename IT::Upper upper;
+    return lower(x) == 0 && upper(x) == 0;
+  } else {
+    return x == NT(0);
+  }
+}
+} // namespace internal
+
+/*!
+\ingroup PkgRigidIncidenceRef
+\brief A sparse polynomial in a fixed number of variables x_0 .. x_{n-1} with coefficients of
+type `NT`: a sorted map from exponent vectors to coefficients.
+
+Terms whose coefficient is certainly zero (an exact 0, or the interval [0, 0]) are dropped;
+an interval coefficient that merely contains 0 is kept, since the exact value it encloses may
+not be zero.
+
+\tparam NT a number type with `+`, `-`, `*` and construction from `int`: `CGAL::Gmpq`,
+`CGAL::Interval_nt<false>`, `CGAL::Gmpfi`, `double`.
+*/
+template <class NT>
+class Sparse_polynomial
+{
+public:
+  typedef std::vector<unsigned> Exponent;      ///< one exponent per variable
+  typedef std::map<Exponent, NT> Term_map;     ///< exponent vector -> coefficient
+
+  /// The zero polynomial in `n` variables.
+  explicit Sparse_polynomial(std::size_t n = 0) : n_(n) {}
+  /// The constant `c` in `n` variables.
+  static Sparse_polynomial constant(std::size_t n, const NT& c)
+  {
+    Sparse_polynomial p(n);
+    p.add_term(Exponent(n, 0), c);
+    return p;
+  }
+  /// The variable x_i in `n` variables.
+  static Sparse_polynomial variable(std::size_t n, std::size_t i)
+  {
+    if (i >= n) throw Input_error("Sparse_polynomial::variable: index " + std::to_string(i) + " of " + std::to_string(n) + " variables");
+    Exponent e(n, 0);
+    e[i] = 1;
+    Sparse_polynomial p(n);
+    p.add_term(e, NT(1));
+    return p;
+  }
+
+  /// Number of variables.
+  std::size_t number_of_variables() const { return n_; }
+  /// The terms, sorted by exponent vector.
+  const Term_map& terms() const { return t_; }
+  /// `true` if no term is left.
+  bool is_zero() const { return t_.empty(); }
+  /// Adds c x^e.
+  void add_term(const Exponent& e, const NT& c)
+  {
+    if (e.size() != n_) throw Input_error("Sparse_polynomial::add_term: exponent of the wrong length");
+    if (internal::certainly_zero(c)) return;
+    auto it = t_.find(e);
+    if (it == t_.end()) { t_.emplace(e, c); return; }
+    it->second = it->second + c;
+    if (internal::certainly_zero(it->second)) t_.erase(it);
+  }
+
+  /// Sum.
+  friend Sparse_polynomial operator+(Sparse_polynomial a, const Sparse_polynomial& b)
+  {
+    a.check(b);
+    for (const auto& t : b.t_) a.add_term(t.first, t.second);
+    return a;
+  }
+  /// Difference.
+  friend Sparse_polynomial operator-(Sparse_polynomial a, const Sparse_polynomial& b)
+  {
+    a.check(b);
+    for (const auto& t : b.t_) a.add_term(t.first, NT(0) - t.second);
+    return a;
+  }
+  /// Product.
+  friend Sparse_polynomial operator*(const Sparse_polynomial& a, const Sparse_polynomial& b)
+  {
+    a.check(b);
+    Sparse_polynomial r(a.n_);
+    Exponent e(a.n_);
+    for (const auto& x : a.t_)
+      for (const auto& y : b.t_) {
+        for (std::size_t i = 0; i < a.n_; ++i) e[i] = x.first[i] + y.first[i];
+        r.add_term(e, x.second * y.second);
+      }
+    return r;
+  }
+  /// Product with a constant.
+  friend Sparse_polynomial operator*(const NT& c, const Sparse_polynomial& a)
+  {
+    Sparse_polynomial r(a.n_);
+    for (const auto& x : a.t_) r.add_term(x.first, c * x.second);
+    return r;
+  }
+
+  /// Degree in x_i (0 for the zero polynomial).
+  unsigned degree(std::size_t i) const
+  {
+    unsigned d = 0;
+    for (const auto& t : t_) d = (std::max)(d, t.first[i]);
+    return d;
+  }
+  /// Total degree (0 for the zero polynomial).
+  unsigned total_degree() const
+  {
+    unsigned d = 0;
+    for (const auto& t : t_) {
+      unsigned s = 0;
+      for (unsigned x : t.first) s += x;
+      d = (std::max)(d, s);
+    }
+    return d;
+  }
+  /// The variables of positive degree, increasing.
+  std::vector<std::size_t> variables() const
+  {
+    std::vector<std::size_t> v;
+    for (std::size_t i = 0; i < n_; ++i) if (degree(i) > 0) v.push_back(i);
+    return v;
+  }
+  /// The value at `x` (one value per variable), in the type `T` (`NT`, or an interval type
+  /// to enclose the value over a box), Horner-free: a sum of monomials.
+  template <class T>
+  T evaluate(const std::vector<T>& x) const
+  {
+    if (x.size() != n_) throw Input_error("Sparse_polynomial::evaluate: " + std::to_string(x.size()) + " values for " +
+                                          std::to_string(n_) + " variables");
+    T s(0);
+    for (const auto& t : t_) {
+      T m = convert<T>(t.second);
+      for (std::size_t i = 0; i < n_; ++i)
+        for (unsigned k = 0; k < t.first[i]; ++k) m = m * x[i];
+      s = s + m;
+    }
+    return s;
+  }
+
+  /// Writes the polynomial with the given variable names (x0, x1, ... if empty).
+  void write(std::ostream& os, const std::vector<std::string>& names = {}) const
+  {
+    if (t_.empty()) { os << "0"; return; }
+    bool first = true;
+    for (auto it = t_.rbegin(); it != t_.rend(); ++it) {
+      os << (first ? "" : " + ") << "(" << it->second << ")";
+      for (std::size_t i = 0; i < n_; ++i) {
+        if (!it->first[i]) continue;
+        os << "*" << (i < names.size() ? names[i] : "x" + std::to_string(i));
+        if (it->first[i] > 1) os << "^" << it->first[i];
+      }
+      first = false;
+    }
+  }
+
+private:
+  template <class T> static T convert(const NT& c)
+  {
+    if constexpr (std::is_same<T, NT>::value) return c;
+    else if constexpr (std::is_same<T, double>::value) return CGAL::to_double(c);
+    else if constexpr (std::is_same<T, CGAL::Interval_nt<false>>::value || std::is_same<T, CGAL::Interval_nt<true>>::value)
+      return T(CGAL::to_interval(c));
+    else return T(c);
+  }
+  void check(const Sparse_polynomial& b) const
+  {
+    if (b.n_ != n_) throw Input_error("Sparse_polynomial: " + std::to_string(n_) + " and " + std::to_string(b.n_) + " variables mixed");
+  }
+  std::size_t n_;
+  Term_map t_;
+};
+
+/*!
+\ingroup PkgRigidIncidenceRef
+\brief A system of polynomial equations f_i = 0 in named variables over a box.
+
+Layer 1 of the package: it knows nothing of bodies or scenes, so any polynomial system can be
+written in it and handed to the solver. Each equation carries a free-text label (the reduced
+system puts the incidence or distance it comes from there).
+*/
+template <class NT>
+struct Polynomial_system
+{
+  std::vector<std::string> variable_names;           ///< one per variable
+  std::vector<std::pair<double, double>> box;        ///< per variable: [lower, upper] searched
+  std::vector<Sparse_polynomial<NT>> equations;      ///< f_i = 0
+  std::vector<std::string> labels;                   ///< per equation: where it comes from
+
+  /// Number of variables.
+  std::size_t number_of_variables() const { return variable_names.size(); }
+  /// Number of equations.
+  std::size_t number_of_equations() const { return equations.size(); }
+};
+
+} // namespace Rigid_incidence
+} // namespace CGAL
+
+#endif

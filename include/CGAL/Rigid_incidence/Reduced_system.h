@@ -1,0 +1,221 @@
+// Copyright (c) 2026 Rigid_incidence contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// The reduced polynomial system of a scene (optimized_incidence_tree_parametrization.txt,
+// Section 4.1 Part 2; elimination_generically_rigid_3d.txt, Section 3): the equations left
+// after the incidence tree's eliminations, as polynomials in the tree's parameters.
+
+#ifndef CGAL_RIGID_INCIDENCE_REDUCED_SYSTEM_H
+#define CGAL_RIGID_INCIDENCE_REDUCED_SYSTEM_H
+
+#include <CGAL/Rigid_incidence/Input_error.h>
+#include <CGAL/Rigid_incidence/Polynomial_system.h>
+#include <CGAL/Rigid_incidence/Rigid_body_collection.h>
+#include <CGAL/Rigid_incidence/incidence_tree_parametrization.h>
+#include <CGAL/Rigid_incidence/optimal_incidence_tree.h>
+#include <CGAL/Rigid_incidence/rigidity_matroid.h>
+#include <CGAL/Rigid_incidence/well_formed_incidences.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Rigid_incidence {
+
+/// \ingroup PkgRigidIncidenceRef
+/// One equation of a `Reduced_system`.
+template <class NT>
+struct Reduced_equation
+{
+  Constraint origin;                   ///< the incidence or distance it stands for
+  std::string label;                   ///< the origin in words
+  Sparse_polynomial<NT> polynomial;    ///< the numerator: polynomial = 0
+  std::vector<std::size_t> variables;  ///< the variables it involves
+  std::vector<unsigned> degrees;       ///< the degree in each of `variables`
+  unsigned total_degree = 0;           ///< its total degree
+  std::size_t frame = 0;               ///< the body whose frame it is written in (the lowest common ancestor)
+};
+
+/*!
+\ingroup PkgRigidIncidenceRef
+\brief The reduced system of a standard collection for an incidence tree, a chart per tree edge
+and a placement per body known by distances.
+
+Equations, in this order (each the numerator of a rational function whose denominator is a
+product of the tree edges' D_e, which never vanish on the charts' boxes, so clearing them
+neither adds nor loses a root in the box):
+- every well-formed incidence marked REMAINING (coordinate p of the difference of the point's
+  positions in its two bodies, written in the frame of their lowest common ancestor, so the
+  variables above it do not appear);
+- the distances that hold the bodies outside the covering set, chosen by the rank test of the
+  rigidity matroid (`constraint_independence()`): a minimal set, each between two points of
+  the covering set;
+- the collection's remaining distances, unless dependent (in conflict).
+A distance is written with `Incidence_tree_parametrization::squared_distance()`, through the
+bodies (among those containing its points) that give the fewest variables, then the lowest
+total degree.
+
+The system is square for a well-constrained scene; `diagnostic()` says otherwise.
+
+\tparam Traits a model of `RigidIncidenceTraits`
+\tparam NT `CGAL::Gmpq` (exact; every body of the covering set must have coordinates),
+`CGAL::Interval_nt<false>` or `CGAL::Gmpfi` (certified enclosures of the exact coefficients).
+*/
+template <class Traits, class NT>
+class Reduced_system
+{
+public:
+  typedef Incidence_tree_parametrization<Traits, NT> Parametrization; ///< the elimination
+  typedef Sparse_polynomial<NT> Polynomial;                            ///< polynomial type
+
+  /*!
+  \param c a standard collection
+  \param tree an incidence tree of `c`
+  \param selection the well-formed incidences for `tree` (`select_well_formed_incidences()`)
+  \param charts one chart index per tree edge (empty: chart 0 everywhere)
+  \param form the rotation form
+  \param placements per body, the placement variant of a body known by distances
+  */
+  Reduced_system(const Rigid_body_collection<Traits>& c, const Incidence_tree& tree, const Well_formed_selection& selection,
+                 const std::vector<int>& charts = {}, Rotation_form form = Rotation_form::QUATERNION_CHARTS,
+                 const std::vector<int>& placements = {})
+    : c_(c), tree_(tree), p_(new Parametrization(c, tree, charts, form, placements))
+  {
+    typename std::conditional<internal::is_interval_nt<NT>::value, CGAL::Protect_FPU_rounding<true>, int>::type guard{};
+    (void)guard;
+    const std::vector<Constraint> ks = system_constraints(c, tree, selection);
+    independence_ = constraint_independence(c, tree.covering_set, ks);
+    for (std::size_t i = 0; i < ks.size(); ++i) {
+      if (!independence_.independent[i]) {
+        if (ks[i].origin != Constraint::BODY_DISTANCE) left_out_.push_back(ks[i]);
+        continue;
+      }
+      if (ks[i].origin == Constraint::TREE_INCIDENCE) continue;
+      equations_.push_back(make_equation(ks[i]));
+    }
+  }
+
+  /// The parametrization (the Table 1 maps along the tree).
+  const Parametrization& parametrization() const { return *p_; }
+  /// The equations.
+  const std::vector<Reduced_equation<NT>>& equations() const { return equations_; }
+  /// Number of variables.
+  std::size_t number_of_variables() const { return p_->number_of_variables(); }
+  /// Number of equations.
+  std::size_t number_of_equations() const { return equations_.size(); }
+  /// Dependent constraints left out (conflicts of an over-constrained scene).
+  const std::vector<Constraint>& left_out() const { return left_out_; }
+  /// The rigidity-matroid test behind the choice of equations.
+  const Constraint_independence& independence() const { return independence_; }
+  /// The number of chart combinations a full solve visits: the product over the tree edges of
+  /// their chart counts (2 for a shared pair, 4 for a free rotation).
+  std::size_t number_of_chart_combinations() const
+  {
+    std::size_t n = 1;
+    for (const auto& e : p_->edges()) n *= std::size_t(e.number_of_charts);
+    return n;
+  }
+  /// `true` if as many equations as variables and no constraint was left out.
+  bool is_square() const { return number_of_equations() == number_of_variables() && left_out_.empty(); }
+  /// Empty for a square system, else what is wrong, in words.
+  std::string diagnostic() const
+  {
+    std::string d;
+    if (number_of_equations() < number_of_variables())
+      d = std::to_string(number_of_variables() - number_of_equations()) + " equation(s) fewer than variables: the scene is"
+          " under-constrained (generic dof " + std::to_string(independence_.generic_dof()) + "); its solutions are not isolated";
+    else if (number_of_equations() > number_of_variables())
+      d = "more equations than variables (internal error: the equations are independent)";
+    if (!left_out_.empty())
+      d += std::string(d.empty() ? "" : "; ") + std::to_string(left_out_.size()) +
+           " dependent constraint(s) left out: the scene is over-constrained and has configurations only if their values agree";
+    return d;
+  }
+  /// The system as a general `Polynomial_system` (for the solver).
+  Polynomial_system<NT> system() const
+  {
+    Polynomial_system<NT> s;
+    s.variable_names = p_->variable_names();
+    s.box = p_->box();
+    for (const auto& e : equations_) { s.equations.push_back(e.polynomial); s.labels.push_back(e.label); }
+    return s;
+  }
+
+private:
+  NT to_nt(const typename Traits::FT& x) const
+  {
+    return internal::Coefficient_ops<NT>::from_rational(internal::exact_rational(x));
+  }
+  // the covering bodies containing point p (none for a free point)
+  std::vector<std::size_t> carriers(std::size_t p) const
+  {
+    std::vector<std::size_t> r;
+    for (std::size_t b : tree_.covering_set) if (c_.body(b).contains(p)) r.push_back(b);
+    return r;
+  }
+  Reduced_equation<NT> finish(const Constraint& k, Polynomial poly, std::size_t frame) const
+  {
+    Reduced_equation<NT> e;
+    e.origin = k;
+    e.label = describe(c_, k);
+    e.polynomial = std::move(poly);
+    e.variables = e.polynomial.variables();
+    for (std::size_t v : e.variables) e.degrees.push_back(e.polynomial.degree(v));
+    e.total_degree = e.polynomial.total_degree();
+    e.frame = frame;
+    return e;
+  }
+  Reduced_equation<NT> make_equation(const Constraint& k) const
+  {
+    const std::size_t npos = Parametrization::npos;
+    if (!k.is_distance()) {
+      const Incidence& i = k.incidence;
+      return finish(k, p_->incidence_difference(i.point, i.body_a, i.body_b, i.coordinate).num,
+                    p_->lowest_common_ancestor(i.body_a, i.body_b));
+    }
+    NT d2;
+    if (k.origin == Constraint::BODY_DISTANCE) {
+      const auto& body = c_.body(k.body);
+      auto sq = body.squared(body.local(k.a), body.local(k.b));
+      if (!sq) throw Input_error("reduced system: body '" + body.name + "' does not fix the distance " + c_.label(k.a) + "-" + c_.label(k.b));
+      d2 = to_nt(*sq);
+    } else {
+      d2 = to_nt(c_.distances()[k.distance].squared);
+    }
+    std::vector<std::size_t> ca = carriers(k.a), cb = carriers(k.b);
+    if (ca.empty()) ca.push_back(npos);
+    if (cb.empty()) cb.push_back(npos);
+    bool have = false;
+    Reduced_equation<NT> best;
+    for (std::size_t a : ca)
+      for (std::size_t b : cb) {
+        auto r = p_->squared_distance_of_points(a, k.a, b, k.b);
+        // |X_a - X_b|^2 - d^2 = (num - d^2 * den) / den
+        Polynomial den = Polynomial::constant(p_->number_of_variables(), NT(1));
+        for (const auto& x : r.den)
+          for (unsigned j = 0; j < x.second; ++j) den = den * p_->denominator(x.first);
+        Polynomial f = r.num - d2 * den;
+        std::size_t frame = (a == npos || b == npos) ? tree_.root : p_->lowest_common_ancestor(a, b);
+        Reduced_equation<NT> e = finish(k, f, frame);
+        if (!have || e.variables.size() < best.variables.size() ||
+            (e.variables.size() == best.variables.size() && e.total_degree < best.total_degree)) {
+          best = e;
+          have = true;
+        }
+      }
+    return best;
+  }
+
+  const Rigid_body_collection<Traits>& c_;
+  Incidence_tree tree_;
+  std::shared_ptr<Parametrization> p_;
+  Constraint_independence independence_;
+  std::vector<Reduced_equation<NT>> equations_;
+  std::vector<Constraint> left_out_;
+};
+
+} // namespace Rigid_incidence
+} // namespace CGAL
+
+#endif
