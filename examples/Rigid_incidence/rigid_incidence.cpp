@@ -11,6 +11,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "reduce_command.h"
+
 #include <algorithm>
 #include <fstream>
 #include <iostream>
@@ -25,6 +27,8 @@ static const char* usage_text =
   "Usage:\n"
   "  rigid_incidence analyze SCENE.json [--json] [--dot FILE] [--dot-seam FILE]\n"
   "                          [--kernel exact|epick|epeck]\n"
+  "  rigid_incidence reduce SCENE.json [--json] [--chart I,J,...] [--form charts|stereographic]\n"
+  "                         [--coefficients auto|exact|interval] [--kernel exact|epick|epeck]\n"
   "  rigid_incidence --help\n"
   "\n"
   "Commands:\n"
@@ -39,6 +43,19 @@ static const char* usage_text =
   "            variables and equations of the reduced system next to the\n"
   "            6(k-1) of the naive formulation (a free rigid motion for each of the k bodies\n"
   "            of the scene, one of them fixed).\n"
+  "\n"
+  "  reduce    The reduced polynomial system of the scene: its variables (the parameters of\n"
+  "            the incidence tree's edges: a hinge's t or s, three quaternion components of a\n"
+  "            free rotation, a translation; three coordinates per free point) with their\n"
+  "            boxes, and its equations with their origin, degrees and terms. --chart picks\n"
+  "            one chart per tree edge (default all 0; 2 charts per hinge, 4 per free\n"
+  "            rotation); --form stereographic gives the papers' form instead; coefficients\n"
+  "            are exact rationals when every body of the covering set has coordinates,\n"
+  "            else certified intervals. --json: {variables [{name, edge, box}], charts,\n"
+  "            chart_combinations, equations [{origin, frame, variables, degrees,\n"
+  "            total_degree, terms [[coefficient, [exponents]]...]}], left_out, square,\n"
+  "            diagnostic, naive_variables}; a coefficient is an exact string (\"p/q\") or an\n"
+  "            interval [lo, hi].\n"
   "\n"
   "Options:\n"
   "  --json         print the analysis as JSON on standard output instead of text; keys:\n"
@@ -71,7 +88,9 @@ static const char* usage_text =
 
 struct Options
 {
+  std::string command = "analyze";
   std::string scene, dot, dot_seam, kernel = "exact";
+  std::string charts, form, coefficients;
   bool json = false;
 };
 
@@ -97,6 +116,8 @@ int analyze(const Options& o)
   RI::Incidence_tree t = RI::optimal_incidence_tree(c);
   RI::Overlap_graph og(c);
   RI::Well_formed_selection wf = RI::select_well_formed_incidences(c, t);
+  if (o.command == "reduce")
+    return reduce_command::reduce(c, t, wf, o.charts, o.form, o.coefficients, o.json, o.scene, 6 * (long(scene.bodies.size()) - 1));
   RI::Incidence_set redundant = RI::redundant_incidences(c, wf);
   // incidences grouped as the user reads them: per point and pair of bodies, the coordinates
   struct Group { std::size_t point, a, b; std::vector<int> coords; bool tree; };
@@ -401,20 +422,26 @@ int main(int argc, char** argv)
   std::vector<std::string> args(argv + 1, argv + argc);
   if (args.empty()) { std::cerr << usage_text; return 1; }
   if (args[0] == "--help" || args[0] == "-h" || args[0] == "help") { std::cout << usage_text; return 0; }
-  if (args[0] != "analyze") { std::cerr << "rigid_incidence: unknown command '" << args[0] << "' (see --help)\n"; return 1; }
+  if (args[0] != "analyze" && args[0] != "reduce") { std::cerr << "rigid_incidence: unknown command '" << args[0] << "' (see --help)\n"; return 1; }
   Options o;
+  o.command = args[0];
   for (std::size_t i = 1; i < args.size(); ++i) {
     const std::string& a = args[i];
     if (a == "--json") o.json = true;
     else if (a == "--help" || a == "-h") { std::cout << usage_text; return 0; }
-    else if (a == "--dot" || a == "--kernel" || a == "--dot-seam") {
+    else if (a == "--dot" || a == "--kernel" || a == "--dot-seam" || a == "--chart" || a == "--form" || a == "--coefficients") {
       if (i + 1 >= args.size()) { std::cerr << "rigid_incidence: " << a << " needs a value\n"; return 1; }
-      (a == "--dot" ? o.dot : a == "--dot-seam" ? o.dot_seam : o.kernel) = args[++i];
+      if ((a == "--chart" || a == "--form" || a == "--coefficients") && o.command != "reduce") {
+        std::cerr << "rigid_incidence: " << a << " is an option of reduce\n";
+        return 1;
+      }
+      (a == "--dot" ? o.dot : a == "--dot-seam" ? o.dot_seam : a == "--chart" ? o.charts : a == "--form" ? o.form
+                                                                 : a == "--coefficients" ? o.coefficients : o.kernel) = args[++i];
     } else if (!a.empty() && a[0] == '-') { std::cerr << "rigid_incidence: unknown option '" << a << "' (see --help)\n"; return 1; }
     else if (o.scene.empty()) o.scene = a;
     else { std::cerr << "rigid_incidence: more than one scene given ('" << a << "')\n"; return 1; }
   }
-  if (o.scene.empty()) { std::cerr << "rigid_incidence: analyze needs a scene file\n"; return 1; }
+  if (o.scene.empty()) { std::cerr << "rigid_incidence: " << o.command << " needs a scene file\n"; return 1; }
   try {
     if (o.kernel == "exact") return analyze<RI::Rigid_incidence_traits<CGAL::Simple_cartesian<CGAL::Gmpq>>>(o);
     if (o.kernel == "epick") return analyze<RI::Rigid_incidence_traits<CGAL::Exact_predicates_inexact_constructions_kernel>>(o);

@@ -207,3 +207,38 @@ if(TARGET rigid_incidence)
                    -DEXPECT_RC=0 "-DCHECK_FILE=${CMAKE_CURRENT_BINARY_DIR}/cli_pent_seam.dot"
                    "-DCHECK_FILE_REGEX=^graph seam&&cluster_b&&1,2,3&&23 well-formed incidences&&}[ \t\r\n]*$" -P ${_ri_cli_script})
 endif()
+
+# --- reduce: the reduced system (issue 5)
+if(TARGET rigid_incidence)
+  set(_ri_d ${RIGID_INCIDENCE_DATA_DIR})
+  add_test(NAME cli_reduce_tetra
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=reduce|${_ri_d}/tetra.json" -DEXPECT_RC=0
+                   "-DEXPECT_STDOUT=interval coefficients[^\n]*: 3 variables, 3 equations" -P ${_ri_cli_script})
+  add_test(NAME cli_reduce_quad_exact
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=reduce|${_ri_d}/quad.json|--chart|1,0,1,0" -DEXPECT_RC=0
+                   "-DEXPECT_STDOUT=exact coefficients[^\n]*: 4 variables, 4 equations" -P ${_ri_cli_script})
+  add_test(NAME cli_reduce_pent_json
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=reduce|${_ri_d}/pent.json|--json" -DEXPECT_RC=0
+                   "-DEXPECT_STDOUT=\"chart_combinations\": 16,[^$]*\"square\": true" -P ${_ri_cli_script})
+  add_test(NAME cli_reduce_stereographic
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=reduce|${_ri_d}/pent.json|--form|stereographic" -DEXPECT_RC=0
+                   "-DEXPECT_STDOUT=stereographic form[^\n]*: 4 variables, 4 equations" -P ${_ri_cli_script})
+  add_test(NAME cli_reduce_under_constrained
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=reduce|${_ri_d}/bar_end.json" -DEXPECT_RC=0
+                   "-DEXPECT_STDOUT=note: 2 equation\\(s\\) fewer than variables" -P ${_ri_cli_script})
+  add_test(NAME cli_reduce_bad_chart
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=reduce|${_ri_d}/tetra.json|--chart|0,2,0" -DEXPECT_RC=2
+                   "-DEXPECT_STDERR=chart 2 of tree edge 1 \\('I1\\{P12,P23,P31\\}' -> 'c2'\\), which has 2" -P ${_ri_cli_script})
+  add_test(NAME cli_reduce_chart_count
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=reduce|${_ri_d}/tetra.json|--chart|0,1" -DEXPECT_RC=2
+                   "-DEXPECT_STDERR=2 chart indices for 3 tree edges" -P ${_ri_cli_script})
+  add_test(NAME cli_reduce_chart_syntax
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=reduce|${_ri_d}/tetra.json|--chart|0,x,1" -DEXPECT_RC=2
+                   "-DEXPECT_STDERR=--chart: 'x' is not a chart index" -P ${_ri_cli_script})
+  add_test(NAME cli_reduce_exact_needs_coordinates
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=reduce|${_ri_d}/tetra.json|--coefficients|exact" -DEXPECT_RC=2
+                   "-DEXPECT_STDERR=body 'I1\\{P12,P23,P31\\}' is known by distances" -P ${_ri_cli_script})
+  add_test(NAME cli_analyze_rejects_chart
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=analyze|${_ri_d}/tetra.json|--chart|0" -DEXPECT_RC=1
+                   "-DEXPECT_STDERR=--chart is an option of reduce" -P ${_ri_cli_script})
+endif()
