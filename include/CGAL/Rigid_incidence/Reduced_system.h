@@ -94,8 +94,19 @@ public:
       if (ks[i].origin == Constraint::TREE_INCIDENCE) continue;
       equations_.push_back(make_equation(ks[i]));
     }
+    std::vector<bool> covered(c.number_of_points(), false);
+    for (std::size_t b : tree.covering_set) for (std::size_t q : c.body(b).points) covered[q] = true;
+    for (std::size_t b : tree.non_covering) {
+      std::size_t n = 0;
+      for (std::size_t q : c.body(b).points) n += covered[q];
+      if (n < 3) loose_.push_back(b);
+    }
   }
 
+  /// The collection.
+  const Rigid_body_collection<Traits>& collection() const { return c_; }
+  /// The incidence tree.
+  const Incidence_tree& tree() const { return tree_; }
   /// The parametrization (the Table 1 maps along the tree).
   const Parametrization& parametrization() const { return *p_; }
   /// The equations.
@@ -116,8 +127,12 @@ public:
     for (const auto& e : p_->edges()) n *= std::size_t(e.number_of_charts);
     return n;
   }
-  /// `true` if as many equations as variables and no constraint was left out.
-  bool is_square() const { return number_of_equations() == number_of_variables() && left_out_.empty(); }
+  /// `true` if as many equations as variables, no constraint left out and every body outside
+  /// the covering set held by three or more of its points.
+  bool is_square() const { return number_of_equations() == number_of_variables() && left_out_.empty() && loose_.empty(); }
+  /// The bodies outside the covering set that fewer than three covered points hold: they keep
+  /// a rotation the reduced system does not see (an under-constrained scene).
+  const std::vector<std::size_t>& loose_bodies() const { return loose_; }
   /// Empty for a square system, else what is wrong, in words.
   std::string diagnostic() const
   {
@@ -127,6 +142,10 @@ public:
           " under-constrained (generic dof " + std::to_string(independence_.generic_dof()) + "); its solutions are not isolated";
     else if (number_of_equations() > number_of_variables())
       d = "more equations than variables (internal error: the equations are independent)";
+    if (!loose_.empty()) {
+      d += std::string(d.empty() ? "" : "; ") + "bodies outside the covering set held by fewer than 3 points (free to turn):";
+      for (std::size_t b : loose_) d += " '" + c_.body(b).name + "'";
+    }
     if (!left_out_.empty())
       d += std::string(d.empty() ? "" : "; ") + std::to_string(left_out_.size()) +
            " dependent constraint(s) left out: the scene is over-constrained and has configurations only if their values agree";
@@ -213,6 +232,7 @@ private:
   Constraint_independence independence_;
   std::vector<Reduced_equation<NT>> equations_;
   std::vector<Constraint> left_out_;
+  std::vector<std::size_t> loose_;
 };
 
 } // namespace Rigid_incidence

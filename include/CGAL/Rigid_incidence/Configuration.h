@@ -1,0 +1,363 @@
+// Copyright (c) 2026 Rigid_incidence contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Back-substitution (from the reduced system's parameters to a configuration of the scene:
+// every body's rotation and translation, every point's coordinates, in the frame the scene
+// names) and verification (the residuals of a configuration in the original, unreduced
+// system of the user's bodies and distances).
+
+#ifndef CGAL_RIGID_INCIDENCE_CONFIGURATION_H
+#define CGAL_RIGID_INCIDENCE_CONFIGURATION_H
+
+#include <CGAL/Rigid_incidence/Input_error.h>
+#include <CGAL/Rigid_incidence/Reduced_system.h>
+#include <CGAL/Rigid_incidence/Rigid_body_collection.h>
+
+#include <Eigen/Dense>
+
+#include <array>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Rigid_incidence {
+
+/// \ingroup PkgRigidIncidenceRef
+/// A rigid motion x -> R x + t in doubles (R row-major).
+struct Rigid_motion
+{
+  std::array<double, 9> R{{1, 0, 0, 0, 1, 0, 0, 0, 1}};  ///< rotation, row-major
+  std::array<double, 3> t{{0, 0, 0}};                    ///< translation
+  /// The image of `y`.
+  std::array<double, 3> operator()(const std::array<double, 3>& y) const
+  {
+    std::array<double, 3> x;
+    for (int i = 0; i < 3; ++i)
+      x[std::size_t(i)] = R[std::size_t(3 * i)] * y[0] + R[std::size_t(3 * i + 1)] * y[1] + R[std::size_t(3 * i + 2)] * y[2] + t[std::size_t(i)];
+    return x;
+  }
+  /// The inverse motion.
+  Rigid_motion inverse() const
+  {
+    Rigid_motion m;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) m.R[std::size_t(3 * i + j)] = R[std::size_t(3 * j + i)];
+    for (int i = 0; i < 3; ++i)
+      m.t[std::size_t(i)] = -(m.R[std::size_t(3 * i)] * t[0] + m.R[std::size_t(3 * i + 1)] * t[1] + m.R[std::size_t(3 * i + 2)] * t[2]);
+    return m;
+  }
+  /// The composition: first `b`, then this.
+  Rigid_motion operator*(const Rigid_motion& b) const
+  {
+    Rigid_motion m;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) {
+        double s = 0;
+        for (int k = 0; k < 3; ++k) s += R[std::size_t(3 * i + k)] * b.R[std::size_t(3 * k + j)];
+        m.R[std::size_t(3 * i + j)] = s;
+      }
+    m.t = (*this)(b.t);
+    return m;
+  }
+};
+
+/// \ingroup PkgRigidIncidenceRef
+/// The best rigid fit of `fit_rigid_motion()`.
+struct Rigid_fit
+{
+  Rigid_motion motion;     ///< the rotation and translation
+  bool reflected = false;  ///< the points fit a mirror image better: a body would come back mirrored
+  double rms = 0;          ///< root mean square distance of the fitted points
+  bool ok = false;         ///< false with fewer than 3 points, or (nearly) collinear ones
+};
+
+/*!
+\ingroup PkgRigidIncidenceRef
+\brief The rigid motion (rotation, no reflection) that best takes the local points `y` onto the
+world points `x` in the least-squares sense (Kabsch's algorithm: the SVD of the cross-covariance,
+with Eigen).
+*/
+inline Rigid_fit fit_rigid_motion(const std::vector<std::array<double, 3>>& y, const std::vector<std::array<double, 3>>& x)
+{
+  Rigid_fit f;
+  const std::size_t n = y.size();
+  if (n < 3 || x.size() != n) return f;
+  Eigen::Vector3d cy = Eigen::Vector3d::Zero(), cx = Eigen::Vector3d::Zero();
+  for (std::size_t i = 0; i < n; ++i) { cy += Eigen::Vector3d(y[i][0], y[i][1], y[i][2]); cx += Eigen::Vector3d(x[i][0], x[i][1], x[i][2]); }
+  cy /= double(n);
+  cx /= double(n);
+  Eigen::Matrix3d H = Eigen::Matrix3d::Zero();
+  double scale = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    Eigen::Vector3d a = Eigen::Vector3d(y[i][0], y[i][1], y[i][2]) - cy, b = Eigen::Vector3d(x[i][0], x[i][1], x[i][2]) - cx;
+    H += a * b.transpose();
+    scale = (std::max)(scale, a.norm());
+  }
+  Eigen::JacobiSVD<Eigen::Matrix3d> svd(H, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  Eigen::Vector3d sv = svd.singularValues();
+  if (!(scale > 0) || sv(1) <= 1e-12 * sv(0)) return f; // collinear: the rotation about the line is free
+  Eigen::Matrix3d D = Eigen::Matrix3d::Identity();
+  const double det = (svd.matrixV() * svd.matrixU().transpose()).determinant();
+  if (det < 0) D(2, 2) = -1;
+  // a reflection fits better when it is needed and the points span space
+  f.reflected = det < 0 && sv(2) > 1e-9 * sv(0);
+  Eigen::Matrix3d R = svd.matrixV() * D * svd.matrixU().transpose();
+  Eigen::Vector3d t = cx - R * cy;
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) f.motion.R[std::size_t(3 * i + j)] = R(i, j);
+    f.motion.t[std::size_t(i)] = t(i);
+  }
+  double s = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    auto p = f.motion(y[i]);
+    for (int k = 0; k < 3; ++k) s += (p[std::size_t(k)] - x[i][std::size_t(k)]) * (p[std::size_t(k)] - x[i][std::size_t(k)]);
+  }
+  f.rms = std::sqrt(s / double(n));
+  f.ok = true;
+  return f;
+}
+
+/// \ingroup PkgRigidIncidenceRef
+/// A configuration of a scene: where every point is and how every body is placed.
+struct Configuration
+{
+  std::string frame;                          ///< the body whose frame the coordinates are in
+  std::vector<std::string> labels;            ///< per point: its label
+  std::vector<std::array<double, 3>> points;  ///< per point: its coordinates
+  std::vector<bool> placed;                   ///< per point: whether the configuration places it
+  std::vector<std::string> body_names;        ///< per body of the standard collection
+  std::vector<Rigid_motion> poses;            ///< per body: local coordinates -> frame coordinates
+  std::vector<bool> body_placed;              ///< per body: whether its pose is known
+
+  /// The coordinates of the point labelled `l`, or an Input_error.
+  const std::array<double, 3>& point(const std::string& l) const
+  {
+    for (std::size_t i = 0; i < labels.size(); ++i)
+      if (labels[i] == l) {
+        if (!placed[i]) throw Input_error("configuration: point '" + l + "' is not placed");
+        return points[i];
+      }
+    throw Input_error("configuration: no point '" + l + "'");
+  }
+};
+
+namespace internal {
+template <class NT> std::array<double, 3> to_double3(const std::array<NT, 3>& p)
+{
+  return {CGAL::to_double(p[0]), CGAL::to_double(p[1]), CGAL::to_double(p[2])};
+}
+} // namespace internal
+
+/*!
+\ingroup PkgRigidIncidenceRef
+\brief Back-substitution: the configuration of the scene for the parameter values `x` of the
+reduced system `r` (one per variable, e.g. a root the solver found).
+
+Every body of the covering set gets its pose from the tree's maps (composed root to leaf);
+each free point its three variables; a body outside the covering set the best rigid fit of
+its points that the covering set places (three or more, not collinear), which also places
+its own other points. All of it is then expressed in the frame of the scene's frame body
+(`Rigid_body_collection::frame()`, by default the first body of the scene) when that body is
+placed, else in the root's frame (`Configuration::frame` says which).
+*/
+template <class Traits, class NT>
+Configuration configuration(const Reduced_system<Traits, NT>& r, const std::vector<double>& x)
+{
+  const auto& c = r.collection();
+  const auto& p = r.parametrization();
+  const auto& tree = r.tree();
+  if (x.size() != p.number_of_variables())
+    throw Input_error("configuration: " + std::to_string(x.size()) + " values for " + std::to_string(p.number_of_variables()) + " variables");
+  for (std::size_t i = 0; i < x.size(); ++i)
+    if (!std::isfinite(x[i])) throw Input_error("configuration: variable '" + p.variable_names()[i] + "' is not a finite number");
+  Configuration conf;
+  const std::size_t nb = c.number_of_bodies(), np = c.number_of_points();
+  conf.labels.resize(np);
+  for (std::size_t i = 0; i < np; ++i) conf.labels[i] = c.label(i);
+  conf.points.assign(np, {0, 0, 0});
+  conf.placed.assign(np, false);
+  conf.poses.assign(nb, Rigid_motion());
+  conf.body_placed.assign(nb, false);
+  for (std::size_t b = 0; b < nb; ++b) conf.body_names.push_back(c.body(b).name);
+  // covering bodies: the tree's maps
+  auto poses = p.template poses<double>(x);
+  for (std::size_t b : tree.covering_set) {
+    conf.poses[b].R = poses[b].R;
+    conf.poses[b].t = poses[b].t;
+    conf.body_placed[b] = true;
+    const auto& body = c.body(b);
+    for (std::size_t i = 0; i < body.points.size(); ++i) {
+      std::size_t q = body.points[i];
+      if (conf.placed[q]) continue;
+      conf.points[q] = conf.poses[b](internal::to_double3(p.coordinates(b)[i]));
+      conf.placed[q] = true;
+    }
+  }
+  for (std::size_t q : c.free_points()) {
+    std::size_t v = p.free_point_variable(q);
+    conf.points[q] = {x[v], x[v + 1], x[v + 2]};
+    conf.placed[q] = true;
+  }
+  // bodies outside the covering set: fit them to their placed points
+  for (std::size_t b : tree.non_covering) {
+    const auto& body = c.body(b);
+    std::vector<Body_enclosure<CGAL::Interval_nt<false>>> enc;
+    std::vector<std::array<double, 3>> local(body.points.size());
+    if (body.all_coordinates()) {
+      for (std::size_t i = 0; i < body.points.size(); ++i)
+        local[i] = {CGAL::to_double(Traits::x(body.coordinates[i])), CGAL::to_double(Traits::y(body.coordinates[i])), CGAL::to_double(Traits::z(body.coordinates[i]))};
+    } else {
+      CGAL::Protect_FPU_rounding<true> guard;
+      auto e = enclose_coordinates<CGAL::Interval_nt<false>>(c, b, 0);
+      if (!e.consistent) continue;
+      for (std::size_t i = 0; i < body.points.size(); ++i)
+        local[i] = {CGAL::to_double(e.coordinates[i][0]), CGAL::to_double(e.coordinates[i][1]), CGAL::to_double(e.coordinates[i][2])};
+    }
+    std::vector<std::array<double, 3>> y, w;
+    for (std::size_t i = 0; i < body.points.size(); ++i)
+      if (conf.placed[body.points[i]]) { y.push_back(local[i]); w.push_back(conf.points[body.points[i]]); }
+    Rigid_fit f = fit_rigid_motion(y, w);
+    if (!f.ok) continue;
+    conf.poses[b] = f.motion;
+    conf.body_placed[b] = true;
+    for (std::size_t i = 0; i < body.points.size(); ++i)
+      if (!conf.placed[body.points[i]]) { conf.points[body.points[i]] = f.motion(local[i]); conf.placed[body.points[i]] = true; }
+  }
+  // the scene's frame
+  conf.frame = c.body(tree.root).name;
+  const std::size_t F = c.body_index(c.frame());
+  if (F < nb && conf.body_placed[F]) {
+    const Rigid_motion to_frame = conf.poses[F].inverse();
+    for (std::size_t q = 0; q < np; ++q) if (conf.placed[q]) conf.points[q] = to_frame(conf.points[q]);
+    for (std::size_t b = 0; b < nb; ++b) if (conf.body_placed[b]) conf.poses[b] = to_frame * conf.poses[b];
+    conf.frame = c.frame();
+  }
+  return conf;
+}
+
+/// \ingroup PkgRigidIncidenceRef
+/// One residual of a configuration in the original system.
+struct Residual
+{
+  /// What is measured.
+  enum Kind
+  {
+    INCIDENCE,  ///< a shared point as two bodies place it: the largest coordinate difference
+    DISTANCE,   ///< a distance: | |X_a - X_b|^2 - d^2 |
+    BODY,       ///< a body's points against its best rigid fit: the largest distance
+    MIRRORED,   ///< a body whose points fit only its mirror image (value: 1)
+    UNPLACED    ///< a body or distance whose points the configuration does not place (value: infinity)
+  };
+  Kind kind = INCIDENCE;  ///< what is measured
+  std::string what;       ///< which bodies, point or distance
+  double value = 0;       ///< the residual (0 for an exact configuration)
+};
+
+/// \ingroup PkgRigidIncidenceRef
+/// The residuals of a configuration, as `residuals()` returns them.
+struct Residual_report
+{
+  std::vector<Residual> entries;  ///< every residual
+  double max_incidence = 0;       ///< largest INCIDENCE and BODY residual
+  double max_distance = 0;        ///< largest DISTANCE residual
+  bool mirrored = false;          ///< some body fits only mirrored
+  bool complete = true;           ///< every body and distance was placed
+  /// The largest residual of any kind (infinity if incomplete or mirrored).
+  double max() const
+  {
+    if (!complete || mirrored) return std::numeric_limits<double>::infinity();
+    return (std::max)(max_incidence, max_distance);
+  }
+};
+
+/*!
+\ingroup PkgRigidIncidenceRef
+\brief The residuals of `conf` in the ORIGINAL system of `original` (the collection as the
+scene file gives it, before `standardize()`), so that any answer can be checked independently
+of the reduction: each body of 3 or more points is fitted rigidly to the configuration's points
+(`fit_rigid_motion()`; a body that only fits mirrored is reported), then every incidence of every
+shared point in every pair of bodies (the largest coordinate difference of the point as the two
+fitted bodies place it), every body's own fit, and every distance (bodies of 2 points, bars,
+enter as their distance). Points are matched by label.
+*/
+template <class Traits>
+Residual_report residuals(const Rigid_body_collection<Traits>& original, const Configuration& conf)
+{
+  Residual_report rep;
+  std::map<std::string, std::size_t> index;
+  for (std::size_t i = 0; i < conf.labels.size(); ++i) index[conf.labels[i]] = i;
+  auto where = [&](const std::string& l, std::array<double, 3>& out) {
+    auto it = index.find(l);
+    if (it == index.end() || !conf.placed[it->second]) return false;
+    out = conf.points[it->second];
+    return true;
+  };
+  auto add = [&](Residual::Kind k, const std::string& what, double v) {
+    rep.entries.push_back(Residual{k, what, v});
+    if (k == Residual::INCIDENCE || k == Residual::BODY) rep.max_incidence = (std::max)(rep.max_incidence, v);
+    if (k == Residual::DISTANCE) rep.max_distance = (std::max)(rep.max_distance, v);
+    if (k == Residual::MIRRORED) rep.mirrored = true;
+    if (k == Residual::UNPLACED) rep.complete = false;
+  };
+  auto dist2 = [](const std::array<double, 3>& a, const std::array<double, 3>& b) {
+    return (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]);
+  };
+  const std::size_t nb = original.number_of_bodies();
+  std::vector<Rigid_fit> fit(nb);
+  std::vector<std::vector<std::array<double, 3>>> local(nb);
+  for (std::size_t b = 0; b < nb; ++b) {
+    const auto& body = original.body(b);
+    const std::string name = "body '" + body.name + "'";
+    if (!body.all_coordinates()) continue;
+    std::vector<std::array<double, 3>> x;
+    bool all = true;
+    for (std::size_t i = 0; i < body.points.size(); ++i) {
+      local[b].push_back({CGAL::to_double(Traits::x(body.coordinates[i])), CGAL::to_double(Traits::y(body.coordinates[i])),
+                          CGAL::to_double(Traits::z(body.coordinates[i]))});
+      std::array<double, 3> w;
+      all = where(original.label(body.points[i]), w) && all;
+      x.push_back(w);
+    }
+    if (!all) { add(Residual::UNPLACED, name, std::numeric_limits<double>::infinity()); continue; }
+    if (body.points.size() == 2) { // a bar: its length
+      add(Residual::DISTANCE, name + " (a bar)", std::abs(dist2(x[0], x[1]) - dist2(local[b][0], local[b][1])));
+      continue;
+    }
+    fit[b] = fit_rigid_motion(local[b], x);
+    if (!fit[b].ok) { add(Residual::UNPLACED, name + " (collinear points)", std::numeric_limits<double>::infinity()); continue; }
+    if (fit[b].reflected) add(Residual::MIRRORED, name + " fits only mirrored", 1);
+    double worst = 0;
+    for (std::size_t i = 0; i < x.size(); ++i) worst = (std::max)(worst, std::sqrt(dist2(fit[b].motion(local[b][i]), x[i])));
+    add(Residual::BODY, name, worst);
+  }
+  // incidences: every shared point in every pair of fitted bodies
+  for (std::size_t a = 0; a < nb; ++a)
+    for (std::size_t b = a + 1; b < nb; ++b) {
+      if (!fit[a].ok || !fit[b].ok) continue;
+      for (std::size_t q : original.common_points(a, b)) {
+        auto pa = fit[a].motion(local[a][original.body(a).local(q)]);
+        auto pb = fit[b].motion(local[b][original.body(b).local(q)]);
+        double d = 0;
+        for (int k = 0; k < 3; ++k) d = (std::max)(d, std::abs(pa[std::size_t(k)] - pb[std::size_t(k)]));
+        add(Residual::INCIDENCE, "point '" + original.label(q) + "' in '" + original.body(a).name + "' and '" + original.body(b).name + "'", d);
+      }
+    }
+  for (const auto& d : original.distances()) {
+    std::array<double, 3> u, w;
+    const std::string what = "distance " + original.label(d.a) + "-" + original.label(d.b);
+    if (!where(original.label(d.a), u) || !where(original.label(d.b), w)) {
+      add(Residual::UNPLACED, what, std::numeric_limits<double>::infinity());
+      continue;
+    }
+    add(Residual::DISTANCE, what, std::abs(dist2(u, w) - CGAL::to_double(d.squared)));
+  }
+  return rep;
+}
+
+} // namespace Rigid_incidence
+} // namespace CGAL
+
+#endif
