@@ -163,6 +163,19 @@ public:
     for (std::size_t i = 0; i < n_; ++i) if (degree(i) > 0) v.push_back(i);
     return v;
   }
+  /// The partial derivative with respect to x_i.
+  Sparse_polynomial derivative(std::size_t i) const
+  {
+    if (i >= n_) throw Input_error("Sparse_polynomial::derivative: variable " + std::to_string(i) + " of " + std::to_string(n_));
+    Sparse_polynomial r(n_);
+    for (const auto& t : t_) {
+      if (t.first[i] == 0) continue;
+      Exponent e = t.first;
+      --e[i];
+      r.add_term(e, NT(int(t.first[i])) * t.second);
+    }
+    return r;
+  }
   /// The value at `x` (one value per variable), in the type `T` (`NT`, or an interval type
   /// to enclose the value over a box), Horner-free: a sum of monomials.
   template <class T>
