@@ -181,10 +181,7 @@ int analyze(const Options& o)
         if (ks[i].origin == RI::Constraint::BODY_DISTANCE) body_distances.push_back(i);
         continue;
       }
-      bool own = ks[i].origin == RI::Constraint::BODY_DISTANCE;
-      for (std::size_t j : mi.circuits[i])
-        own = own && ks[j].origin == RI::Constraint::BODY_DISTANCE && ks[j].body == ks[i].body;
-      if (own) ++implied_body_distances;
+      if (mi.follows_from_its_body(i)) ++implied_body_distances;
       else conflicts.push_back(i);
     }
   } else {
@@ -433,6 +430,10 @@ int main(int argc, char** argv)
       if (i + 1 >= args.size()) { std::cerr << "rigid_incidence: " << a << " needs a value\n"; return 1; }
       if ((a == "--chart" || a == "--form" || a == "--coefficients") && o.command != "reduce") {
         std::cerr << "rigid_incidence: " << a << " is an option of reduce\n";
+        return 1;
+      }
+      if ((a == "--dot" || a == "--dot-seam") && o.command != "analyze") {
+        std::cerr << "rigid_incidence: " << a << " is an option of analyze\n";
         return 1;
       }
       (a == "--dot" ? o.dot : a == "--dot-seam" ? o.dot_seam : a == "--chart" ? o.charts : a == "--form" ? o.form

@@ -88,7 +88,7 @@ public:
     independence_ = constraint_independence(c, tree.covering_set, ks);
     for (std::size_t i = 0; i < ks.size(); ++i) {
       if (!independence_.independent[i]) {
-        if (ks[i].origin != Constraint::BODY_DISTANCE) left_out_.push_back(ks[i]);
+        if (!independence_.follows_from_its_body(i)) left_out_.push_back(ks[i]);
         continue;
       }
       if (ks[i].origin == Constraint::TREE_INCIDENCE) continue;
@@ -115,7 +115,8 @@ public:
   std::size_t number_of_variables() const { return p_->number_of_variables(); }
   /// Number of equations.
   std::size_t number_of_equations() const { return equations_.size(); }
-  /// Dependent constraints left out (conflicts of an over-constrained scene).
+  /// Dependent constraints left out because they conflict (`Constraint_independence::conflicts()`:
+  /// an over-constrained scene); a body's surplus distances are left out silently.
   const std::vector<Constraint>& left_out() const { return left_out_; }
   /// The rigidity-matroid test behind the choice of equations.
   const Constraint_independence& independence() const { return independence_; }

@@ -18,6 +18,7 @@
 
 #include <array>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <string>
 #include <utility>
@@ -218,11 +219,11 @@ public:
   const std::vector<Point>& coordinates(std::size_t b) const { return coordinates_[b]; }
 
   /// The bound B on each coordinate of a translation or a free point: the largest distance
-  /// from a body's frame origin to its points, twice over, plus a bound on the diameter of
-  /// the assembled scene (the sum of the diameters of the covering bodies and of the lengths
-  /// of the remaining distances: the scene is connected, so any two of its points are joined
-  /// by a chain through bodies and distances that uses each at most once). A translation
-  /// takes a point x of the child to its place in the parent's frame, at most
+  /// from a covering body's frame origin to its points, twice over, plus a bound on the
+  /// diameter of the assembled scene (the sum of the diameters of ALL bodies and of the
+  /// lengths of the distances: the scene is connected, so any two of its points are joined by
+  /// a chain through bodies and distances that uses each at most once). A translation takes a
+  /// point x of the child to its place in the parent's frame, at most
   /// |x| + diameter + (the parent's largest |point|) from the parent's origin: B bounds that.
   double translation_bound() const
   {
@@ -234,8 +235,30 @@ public:
         for (const NT& x : p) { double m = internal::Coefficient_ops<NT>::magnitude(x); n += m * m; }
         r = (std::max)(r, std::sqrt(n));
       }
-      diameter += 2 * r;
       largest = (std::max)(largest, r);
+    }
+    for (std::size_t b = 0; b < c_.number_of_bodies(); ++b) { // a body's diameter: its longest known distance
+      const auto& body = c_.body(b);
+      double d2 = 0;
+      for (std::size_t i = 0; i < body.points.size(); ++i)
+        for (std::size_t j = i + 1; j < body.points.size(); ++j) {
+          auto sq = body.squared(i, j);
+          if (sq) d2 = (std::max)(d2, std::abs(CGAL::to_interval(*sq).second));
+          else d2 = std::numeric_limits<double>::infinity(); // not known: bound it from a placement
+        }
+      if (!std::isfinite(d2)) {
+        CGAL::Protect_FPU_rounding<true> guard;
+        Body_enclosure<CGAL::Interval_nt<false>> e = enclose_coordinates<CGAL::Interval_nt<false>>(c_, b, 0);
+        if (!e.consistent) throw Input_error("body '" + body.name + "': its distances admit no placement");
+        d2 = 0;
+        for (std::size_t i = 0; i < body.points.size(); ++i)
+          for (std::size_t j = i + 1; j < body.points.size(); ++j) {
+            CGAL::Interval_nt<false> s(0);
+            for (int k = 0; k < 3; ++k) s += CGAL::square(e.coordinates[i][std::size_t(k)] - e.coordinates[j][std::size_t(k)]);
+            d2 = (std::max)(d2, s.sup());
+          }
+      }
+      diameter += std::sqrt(d2);
     }
     for (const auto& d : c_.distances()) {
       std::pair<double, double> i = CGAL::to_interval(d.squared);

@@ -77,6 +77,25 @@ struct Constraint_independence
     for (std::size_t i = 0; i < independent.size(); ++i) if (!independent[i]) d.push_back(i);
     return d;
   }
+  /// `true` if constraint `i` is dependent only because a body outside the covering set has
+  /// more distances than it needs: its circuit lies in that body's own distances, which the
+  /// body's rigidity makes consistent. Such a constraint is harmless.
+  bool follows_from_its_body(std::size_t i) const
+  {
+    if (independent[i] || constraints[i].origin != Constraint::BODY_DISTANCE) return false;
+    for (std::size_t j : circuits[i])
+      if (constraints[j].origin != Constraint::BODY_DISTANCE || constraints[j].body != constraints[i].body) return false;
+    return true;
+  }
+  /// The constraints in conflict: dependent, and not merely a body's own surplus distance
+  /// (`follows_from_its_body()`). The scene fixes each of them twice: over-constrained; it has
+  /// configurations only if the given values agree.
+  std::vector<std::size_t> conflicts() const
+  {
+    std::vector<std::size_t> d;
+    for (std::size_t i = 0; i < independent.size(); ++i) if (!independent[i] && !follows_from_its_body(i)) d.push_back(i);
+    return d;
+  }
 };
 
 namespace internal {

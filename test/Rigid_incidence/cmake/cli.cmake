@@ -238,6 +238,12 @@ if(TARGET rigid_incidence)
   add_test(NAME cli_reduce_exact_needs_coordinates
            COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=reduce|${_ri_d}/tetra.json|--coefficients|exact" -DEXPECT_RC=2
                    "-DEXPECT_STDERR=body 'I1\\{P12,P23,P31\\}' is known by distances" -P ${_ri_cli_script})
+  add_test(NAME cli_reduce_over_constrained
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=reduce|${_ri_d}/hinge_ring.json|--json" -DEXPECT_RC=0
+                   "-DEXPECT_STDOUT=\"left_out\": \\[[^]]*distance[^]]*distance[^]]*\\],[^$]*\"square\": false" -P ${_ri_cli_script})
+  add_test(NAME cli_reduce_rejects_dot
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=reduce|${_ri_d}/tetra.json|--dot|x.dot" -DEXPECT_RC=1
+                   "-DEXPECT_STDERR=--dot is an option of analyze" -P ${_ri_cli_script})
   add_test(NAME cli_analyze_rejects_chart
            COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=analyze|${_ri_d}/tetra.json|--chart|0" -DEXPECT_RC=1
                    "-DEXPECT_STDERR=--chart is an option of reduce" -P ${_ri_cli_script})
