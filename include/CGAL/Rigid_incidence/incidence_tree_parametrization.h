@@ -596,18 +596,49 @@ private:
     for (const auto& x : b.den) d[x.first] = (std::max)(d[x.first], x.second);
     return d;
   }
+  // A zero term adds nothing, not even its denominator (a point at an edge's pivot, or at a
+  // child's frame origin, would otherwise drag a D_e the equation does not depend on).
   Rational add(const Rational& a, const Rational& b) const
   {
+    if (a.num.is_zero()) return b;
+    if (b.num.is_zero()) return a;
     auto d = common(a, b);
     return Rational{lift(a, d).num + lift(b, d).num, d};
   }
+  // Two numbers certainly equal: exact equality, or the same degenerate interval [x, x].
+  static bool certainly_equal(const NT& x, const NT& y)
+  {
+    if constexpr (internal::Coefficient_ops<NT>::is_interval) {
+      typename CGAL::Interval_traits<NT>::Lower lower;
+      typename CGAL::Interval_traits<NT>::Upper upper;
+      return lower(x) == upper(x) && lower(y) == upper(y) && lower(x) == lower(y);
+    } else {
+      return x == y;
+    }
+  }
+  // A constant polynomial's value, if the polynomial is constant.
+  static bool constant_value(const Rational& r, NT& v)
+  {
+    if (!r.den.empty()) return false;
+    if (r.num.is_zero()) { v = NT(0); return true; }
+    if (r.num.terms().size() != 1) return false;
+    const auto& t = *r.num.terms().begin();
+    for (unsigned e : t.first) if (e) return false;
+    v = t.second;
+    return true;
+  }
   Rational sub(const Rational& a, const Rational& b) const
   {
+    NT va, vb;
+    if (constant_value(a, va) && constant_value(b, vb) && certainly_equal(va, vb)) return Rational{Polynomial(names_.size()), {}};
+    if (b.num.is_zero()) return a;
+    if (a.num.is_zero()) return scale(NT(-1), b);
     auto d = common(a, b);
     return Rational{lift(a, d).num - lift(b, d).num, d};
   }
   Rational mul(const Rational& a, const Rational& b) const
   {
+    if (a.num.is_zero() || b.num.is_zero()) return Rational{Polynomial(names_.size()), {}};
     Rational r{a.num * b.num, a.den};
     for (const auto& x : b.den) r.den[x.first] += x.second;
     return r;
@@ -633,7 +664,7 @@ private:
       Rational s = mul(poly(M_[k][std::size_t(3 * i)]), Z[0]);
       s = add(s, mul(poly(M_[k][std::size_t(3 * i + 1)]), Z[1]));
       s = add(s, mul(poly(M_[k][std::size_t(3 * i + 2)]), Z[2]));
-      s.den[k] += 1;
+      if (!s.num.is_zero()) s.den[k] += 1;
       out[std::size_t(i)] = s;
     }
     return out;
