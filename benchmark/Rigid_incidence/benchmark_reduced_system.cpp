@@ -64,10 +64,11 @@ typedef CGAL::Gmpq Q;
 // taken from a different earlier body. No two bodies share 3 or more points, no three points
 // of a body are collinear. Each body is written in its own frame y = R x + t, R = M(q)/|q|^2
 // for an integer quaternion q, t integer, so the data stay rational. Then a few distances
-// (1 + n/10, then more while the dof count of the standard collection is positive) between
-// points of no common body. Closing bodies and distances that would make
-// standardize() merge bodies (a clique of 4 fixed pairs outside any body) are redrawn, so
-// the standard collection keeps every body (plus implied bodies: triangles of fixed pairs).
+// between points of no common body: 1 + n/10, and more while the reduced system would be
+// under-constrained. Closing bodies and distances are redrawn when standardize() would merge
+// bodies (a clique of 4 fixed pairs outside any body) or when they would over-constrain the
+// scene, so the standard collection keeps every body (plus implied bodies: triangles of
+// fixed pairs) and the reduced system is usually square.
 struct Planted
 {
   Collection user;
@@ -79,6 +80,55 @@ static bool collinear(const IP& a, const IP& b, const IP& c)
 {
   long long u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
   return u[1] * v[2] - u[2] * v[1] == 0 && u[2] * v[0] - u[0] * v[2] == 0 && u[0] * v[1] - u[1] * v[0] == 0;
+}
+
+// The shape of the reduced system of a user collection, without building its polynomials:
+// standardize(), the greedy incidence tree (the exact one of a 30-body scene can take seconds
+// to minutes), the well-formed selection and the rigidity-matroid test, counted as
+// Reduced_system does (variables: the tree weight + 3 per free point).
+struct Shape
+{
+  bool ok = false;        // standardize() and the analysis went through
+  bool collapsed = true;  // standardize() merged bodies
+  long vars = 0, eqs = 0;
+  bool conflict = false;  // a dependent constraint that does not follow from its body
+  bool loose = false;     // a body outside the covering set held by fewer than 3 covered points
+  bool square() const { return ok && !collapsed && vars == eqs && !conflict && !loose; }
+};
+
+static Shape shape_of(const Collection& user)
+{
+  Shape s;
+  try {
+    Collection c = RI::standardize(user);
+    std::size_t kept = 0, merged = 0;
+    for (const auto& b : c.bodies()) {
+      kept += b.origin == RI::Body_origin::USER;
+      merged += b.origin == RI::Body_origin::MERGED;
+    }
+    s.collapsed = merged != 0 || kept != user.number_of_bodies();
+    RI::Incidence_tree_options greedy;
+    greedy.exact_limit = 0;
+    const RI::Incidence_tree t = RI::optimal_incidence_tree(c, greedy);
+    const RI::Well_formed_selection wf = RI::select_well_formed_incidences(c, t);
+    const std::vector<RI::Constraint> ks = RI::system_constraints(c, t, wf);
+    const RI::Constraint_independence ind = RI::constraint_independence(c, t.covering_set, ks);
+    for (std::size_t i = 0; i < ks.size(); ++i) {
+      if (!ind.independent[i]) { s.conflict = s.conflict || !ind.follows_from_its_body(i); continue; }
+      if (ks[i].origin != RI::Constraint::TREE_INCIDENCE) ++s.eqs;
+    }
+    std::vector<bool> covered(c.number_of_points(), false);
+    for (std::size_t b : t.covering_set) for (std::size_t q : c.body(b).points) covered[q] = true;
+    for (std::size_t b : t.non_covering) {
+      std::size_t m = 0;
+      for (std::size_t q : c.body(b).points) m += covered[q];
+      s.loose = s.loose || m < 3;
+    }
+    s.vars = long(t.weight) + 3 * RI::dof_count(c).free_points;
+    s.ok = true;
+  } catch (const RI::Input_error&) {
+  }
+  return s;
 }
 
 static Planted random_planted_once(std::size_t n, CGAL::Random& rng)
@@ -160,7 +210,47 @@ static Planted random_planted_once(std::size_t n, CGAL::Random& rng)
     bodies.push_back(b);
     link(b);
   }
-  for (int guard = 0; bodies.size() < n && guard < 100000; ++guard) {
+  // each body in its own rational frame: y = R x + t, R = M(q)/|q|^2, q an integer quaternion
+  struct Frame { long M[3][3]; Q norm; long t[3]; };
+  std::vector<Frame> frames;
+  auto new_frame = [&]() {
+    Frame f;
+    long w, x, y, z;
+    do { w = rng.get_int(-4, 5); x = rng.get_int(-4, 5); y = rng.get_int(-4, 5); z = rng.get_int(-4, 5); }
+    while (w == 0 && x == 0 && y == 0 && z == 0);
+    f.norm = Q(w * w + x * x + y * y + z * z);
+    const long M[3][3] = {{w * w + x * x - y * y - z * z, 2 * (x * y - w * z), 2 * (x * z + w * y)},
+                          {2 * (x * y + w * z), w * w - x * x + y * y - z * z, 2 * (y * z - w * x)},
+                          {2 * (x * z - w * y), 2 * (y * z + w * x), w * w - x * x - y * y + z * z}};
+    for (int r = 0; r < 3; ++r) for (int c = 0; c < 3; ++c) f.M[r][c] = M[r][c];
+    for (int r = 0; r < 3; ++r) f.t[r] = rng.get_int(-10, 11);
+    return f;
+  };
+  for (std::size_t i = 0; i < bodies.size(); ++i) frames.push_back(new_frame());
+  std::vector<std::pair<std::size_t, std::size_t>> distances;
+  auto collection = [&]() {
+    Collection c;
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+      const Frame& f = frames[i];
+      std::vector<std::pair<std::string, K::Point_3>> pts;
+      for (std::size_t p : bodies[i]) {
+        Q y3[3];
+        for (int r = 0; r < 3; ++r)
+          y3[r] = Q(f.M[r][0] * world[p][0] + f.M[r][1] * world[p][1] + f.M[r][2] * world[p][2]) / f.norm + Q(f.t[r]);
+        pts.emplace_back("p" + std::to_string(p), K::Point_3(y3[0], y3[1], y3[2]));
+      }
+      c.add_body("b" + std::to_string(i), pts);
+    }
+    for (const auto& d : distances) {
+      long long d2 = 0;
+      for (int k = 0; k < 3; ++k) d2 += (world[d.first][k] - world[d.second][k]) * (world[d.first][k] - world[d.second][k]);
+      c.add_distance("p" + std::to_string(d.first), "p" + std::to_string(d.second), Q(d2));
+    }
+    return c;
+  };
+  // cycle-closing bodies, each point from a different earlier body; redrawn when they would
+  // over-constrain the scene (a dependent constraint, `Shape::conflict`)
+  for (int guard = 0; bodies.size() < n && guard < 2000; ++guard) {
     const std::size_t size = std::min(std::size_t(rng.get_int(3, 5)), bodies.size());
     std::vector<std::size_t> from, b;
     while (from.size() < size) {
@@ -177,71 +267,60 @@ static Planted random_planted_once(std::size_t n, CGAL::Random& rng)
     for (const auto& o : bodies) ok = ok && common(b, o) <= 2;
     if (!ok || closes_k4(b)) continue;
     bodies.push_back(b);
+    frames.push_back(new_frame());
+    const Shape sh = shape_of(collection());
+    if (!sh.ok || sh.collapsed || sh.conflict) { bodies.pop_back(); frames.pop_back(); continue; }
     link(b);
   }
-  Planted out;
-  for (std::size_t i = 0; i < bodies.size(); ++i) {
-    long w, x, y, z;
-    do { w = rng.get_int(-4, 5); x = rng.get_int(-4, 5); y = rng.get_int(-4, 5); z = rng.get_int(-4, 5); }
-    while (w == 0 && x == 0 && y == 0 && z == 0);
-    const Q nq(w * w + x * x + y * y + z * z);
-    const long M[3][3] = {{w * w + x * x - y * y - z * z, 2 * (x * y - w * z), 2 * (x * z + w * y)},
-                          {2 * (x * y + w * z), w * w - x * x + y * y - z * z, 2 * (y * z - w * x)},
-                          {2 * (x * z - w * y), 2 * (y * z + w * x), w * w - x * x - y * y + z * z}};
-    const long t[3] = {rng.get_int(-10, 11), rng.get_int(-10, 11), rng.get_int(-10, 11)};
-    std::vector<std::pair<std::string, K::Point_3>> pts;
-    for (std::size_t p : bodies[i]) {
-      Q y3[3];
-      for (int r = 0; r < 3; ++r)
-        y3[r] = Q(M[r][0] * world[p][0] + M[r][1] * world[p][1] + M[r][2] * world[p][2]) / nq + Q(t[r]);
-      pts.emplace_back("p" + std::to_string(p), K::Point_3(y3[0], y3[1], y3[2]));
-    }
-    out.user.add_body("b" + std::to_string(i), pts);
-  }
-  // a few distances between points of no common body: 1 + n/10, then more while the dof
-  // count of the standard collection is positive (so that most scenes are well-constrained
-  // by the count and their reduced systems square)
+  // a few distances between points of no common body (3 of 4 ends drawn among the points of
+  // one body only): 1 + n/10, then more (at most n) while the reduced system has fewer
+  // equations than variables or a loose body; a distance that would conflict is redrawn
   std::vector<std::size_t> used;
   for (const auto& b : bodies) used.insert(used.end(), b.begin(), b.end());
   std::sort(used.begin(), used.end());
+  std::vector<std::size_t> own; // points of one body only: a distance there ties a hinged body down
+  for (std::size_t i = 0; i < used.size(); ++i)
+    if ((i == 0 || used[i - 1] != used[i]) && (i + 1 == used.size() || used[i + 1] != used[i])) own.push_back(used[i]);
   used.erase(std::unique(used.begin(), used.end()), used.end());
-  auto add_distance = [&]() {
-    for (int guard = 0; guard < 100000; ++guard) {
-      std::size_t a = used[std::size_t(rng.get_int(0, int(used.size())))], b = used[std::size_t(rng.get_int(0, int(used.size())))];
-      if (a == b || adj[a].count(b) || closes_k4({a, b})) continue;
-      long long d2 = 0;
-      for (int k = 0; k < 3; ++k) d2 += (world[a][k] - world[b][k]) * (world[a][k] - world[b][k]);
-      out.user.add_distance("p" + std::to_string(a), "p" + std::to_string(b), Q(d2));
-      link({a, b});
-      return true;
-    }
-    return false;
+  if (own.empty()) own = used;
+  auto pick = [&]() {
+    const auto& from = rng.get_int(0, 4) == 0 ? used : own;
+    return from[std::size_t(rng.get_int(0, int(from.size())))];
   };
-  for (std::size_t k = 0; k < 1 + n / 10; ++k) add_distance();
-  for (int guard = 0; guard < int(2 * n); ++guard) {
-    long dof = 0;
-    try { dof = RI::dof_count(RI::standardize(out.user)).dof; } catch (const RI::Input_error&) { break; }
-    if (dof <= 0 || !add_distance()) break;
+  Shape sh = shape_of(collection());
+  for (std::size_t k = 0, guard = 0; guard < 20 * n && sh.ok && !sh.collapsed && !sh.square(); ++guard) {
+    if (k >= 1 + n / 10 && sh.vars <= sh.eqs && !sh.loose) break;
+    if (k >= n) break;
+    std::size_t a = pick(), b = pick();
+    if (a == b || adj[a].count(b) || closes_k4({a, b})) continue;
+    distances.emplace_back(a, b);
+    const Shape next = shape_of(collection());
+    if (!next.ok || next.collapsed || next.conflict) { distances.pop_back(); continue; }
+    link({a, b});
+    sh = next;
+    ++k;
   }
+  Planted out;
+  out.user = collection();
   return out;
 }
 
-// A planted scene that standardize() does not collapse: no merged body, every user body kept.
-static Planted random_planted(std::size_t n, CGAL::Random& rng)
+// A planted scene of n bodies that standardize() does not collapse (no merged body, every user
+// body kept) and whose reduced system for the greedy incidence tree is square (`Shape`): redrawn
+// up to 30 times, else the last draw that does not collapse. (The table's reduced systems use
+// the optimal tree; a non-square one is marked.)
+static Planted random_planted(std::size_t n, CGAL::Random& rng, int* attempts)
 {
-  for (int attempt = 0;; ++attempt) {
+  Planted fallback;
+  bool have_fallback = false;
+  for (int attempt = 1;; ++attempt) {
+    *attempts = attempt;
     Planted p = random_planted_once(n, rng);
-    try {
-      Collection c = RI::standardize(p.user);
-      std::size_t user = 0, merged = 0;
-      for (const auto& b : c.bodies()) {
-        user += b.origin == RI::Body_origin::USER;
-        merged += b.origin == RI::Body_origin::MERGED;
-      }
-      if ((merged == 0 && user == p.user.number_of_bodies()) || attempt >= 50) return p;
-    } catch (const RI::Input_error&) {
-      if (attempt >= 50) return p;
-    }
+    const Shape sh = shape_of(p.user);
+    const bool complete = p.user.number_of_bodies() == n; // every cycle-closing body found a place
+    if (complete && sh.square()) return p;
+    if (complete && sh.ok && !sh.collapsed) { fallback = p; have_fallback = true; }
+    if (attempt >= 30 && (have_fallback || attempt >= 100)) return have_fallback ? fallback : p;
   }
 }
 
@@ -417,6 +496,8 @@ struct Row
   std::size_t user_bodies = 0, standard_bodies = 0, points = 0, distances = 0;
   long dof = 0;
   double analysis_seconds = 0;
+  int attempts = 0; // random scenes: draws until the reduced system was square
+  bool exact = true; // the reduced systems' coefficients: exact, or intervals
   std::string note;
   std::array<Stats, 4> cells;
 };
@@ -466,6 +547,7 @@ static Row run_scene(const std::string& name, const std::string& group, const Co
   row.standard_bodies = a.c.number_of_bodies();
   row.dof = RI::dof_count(a.c).dof;
   for (std::size_t b : a.tree.covering_set) a.exact = a.exact && a.c.body(b).all_coordinates();
+  row.exact = a.exact;
   for (int k = 0; k < 2; ++k) {
     RI::Rotation_form form = k == 0 ? RI::Rotation_form::QUATERNION_CHARTS : RI::Rotation_form::STEREOGRAPHIC;
     row.cells[std::size_t(k)] = run_cell([&]() {
@@ -474,7 +556,8 @@ static Row run_scene(const std::string& name, const std::string& group, const Co
   }
   row.cells[2] = run_cell([&]() { return build_naive(user, RI::Naive_form::TRIGONOMETRIC); }, cap);
   row.cells[3] = run_cell([&]() { return build_naive(user, RI::Naive_form::QUATERNION); }, cap);
-  std::cout << name << ": " << row.user_bodies << " bodies (" << row.standard_bodies << " standard), dof " << row.dof;
+  std::cout << name << ": " << row.user_bodies << " bodies (" << row.standard_bodies << " standard), dof " << row.dof
+            << ", analysis " << fixed(row.analysis_seconds, 4) << " s";
   for (int k = 0; k < 4; ++k) {
     const Stats& s = row.cells[std::size_t(k)];
     std::cout << "\n  " << std::left << std::setw(28) << system_names[k] << std::right;
@@ -487,11 +570,16 @@ static Row run_scene(const std::string& name, const std::string& group, const Co
   return row;
 }
 
+static std::string ratio_text(double r)
+{
+  if (r < 0.1) return fmt(r, 2);
+  return fixed(r, r < 10 ? 2 : (r < 100 ? 1 : 0));
+}
+
 static std::string ratio(const Stats& naive, const Stats& reduced, bool terms)
 {
   if (naive.status != OK || reduced.status != OK) return "";
-  double r = terms ? double(naive.terms) / double(std::max(1L, reduced.terms)) : double(naive.vars) / double(std::max(1L, reduced.vars));
-  return fixed(r, r < 10 ? 2 : (r < 100 ? 1 : 0));
+  return ratio_text(terms ? double(naive.terms) / double(std::max(1L, reduced.terms)) : double(naive.vars) / double(std::max(1L, reduced.vars)));
 }
 
 static void write_svg(const std::string& file, const std::vector<Row>& rows, double cap)
@@ -501,7 +589,8 @@ static void write_svg(const std::string& file, const std::vector<Row>& rows, dou
   int decades = std::max(1, int(std::ceil(std::log10(double(top)) - 1e-12)));
   const int bar = 9, gap = 14, left = 70, plot_h = 360, top_margin = 70, bottom = 110;
   const int group_w = 4 * bar + gap;
-  const int width = left + int(rows.size()) * group_w + 30, height = top_margin + plot_h + bottom;
+  const int legend_w = 4 * 190 + 230;
+  const int width = left + std::max(int(rows.size()) * group_w, legend_w) + 30, height = top_margin + plot_h + bottom;
   auto y_of = [&](double v) { return top_margin + plot_h - plot_h * (std::log10(std::max(1.0, v)) / decades); };
   std::ofstream svg(file);
   svg << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
@@ -514,7 +603,7 @@ static void write_svg(const std::string& file, const std::vector<Row>& rows, dou
   for (int k = 0; k < 4; ++k) {
     svg << "<rect x=\"" << lx << "\" y=\"32\" width=\"12\" height=\"12\" fill=\"" << colors[k] << "\"/>"
         << "<text x=\"" << lx + 16 << "\" y=\"42\">" << system_names[k] << "</text>\n";
-    lx += 200;
+    lx += 190;
   }
   svg << "<rect x=\"" << lx << "\" y=\"32\" width=\"12\" height=\"12\" fill=\"none\" stroke=\"#888\" stroke-dasharray=\"3,2\"/>"
       << "<text x=\"" << lx + 16 << "\" y=\"42\">skipped (&gt; " << cap << " s to build)</text>\n";
@@ -568,14 +657,16 @@ int main(int argc, char** argv)
   for (std::size_t n = 5; n <= max_n; n += 5)
     for (int s = 0; s < seeds; ++s) {
       CGAL::Random rng(unsigned(20260000 + 100 * n + std::size_t(s)));
-      Planted p = random_planted(n, rng);
+      int attempts = 0;
+      Planted p = random_planted(n, rng, &attempts);
       rows.push_back(run_scene("random" + std::to_string(n) + "-s" + std::to_string(s), "random " + std::to_string(n), p.user, cap));
+      rows.back().attempts = attempts;
     }
   total.stop();
 
   // CSV: one line per scene and system
   std::ofstream csv(prefix + ".csv");
-  csv << "scene,user_bodies,standard_bodies,points,distances,dof,system,status,coefficients,variables,equations,"
+  csv << "scene,draws,user_bodies,standard_bodies,points,distances,dof,system,status,coefficients,variables,equations,"
          "max_degree_in_one_variable,max_total_degree,terms,max_variables_per_equation,build_seconds,analysis_seconds,"
          "variables_naive_over_reduced_charts,terms_naive_over_reduced_charts,terms_naive_over_reduced_stereographic,note\n";
   for (const auto& r : rows)
@@ -584,9 +675,9 @@ int main(int argc, char** argv)
       const bool naive = k >= 2, ok = s.status == OK;
       std::string note = s.message;
       for (char& ch : note) if (ch == ',' || ch == '"' || ch == '\n') ch = ';';
-      csv << r.scene << "," << r.user_bodies << "," << r.standard_bodies << "," << r.points << "," << r.distances << "," << r.dof << ","
+      csv << r.scene << "," << r.attempts << "," << r.user_bodies << "," << r.standard_bodies << "," << r.points << "," << r.distances << "," << r.dof << ","
           << system_keys[k] << "," << (ok ? "ok" : s.status == SKIPPED ? "skipped" : "error") << ","
-          << (naive ? "exact" : s.exact ? "exact" : "interval") << ",";
+          << (naive || r.exact ? "exact" : "interval") << ",";
       if (ok)
         csv << s.vars << "," << s.eqs << "," << s.max_var_degree << "," << s.max_total_degree << "," << s.terms << ","
             << s.max_vars_per_eq << "," << s.seconds << ",";
@@ -623,8 +714,10 @@ int main(int argc, char** argv)
         "`randomN-sK` of N bodies (seed K): points at integer world positions, bodies of 3-5 points sharing a pair "
         "(probability 3/4) or a point with one earlier body, the last quarter of the bodies closing cycles (3-4 points, each "
         "from a different earlier body), each body in its own rational frame (rotation M(q)/|q|^2 of an integer quaternion), "
-        "and 1 + N/10 distances between points of no common body, then more while the dof count is positive; drawn so that `standardize()` merges no bodies (it only adds "
-        "implied bodies).\n\n"
+        "and distances between points of no common body (1 + N/10, or fewer when the scene is already well-constrained, "
+        "more while the reduced system would have fewer equations than variables). Closing bodies and distances that would "
+        "make `standardize()` merge bodies or that would over-constrain the scene are redrawn; a scene whose reduced system "
+        "(for the greedy tree) is still not square is redrawn, up to 30 times (CSV column `draws`).\n\n"
      << "Systems: **reduced, quaternion charts** = `Reduced_system(c, tree, selection, {}, Rotation_form::QUATERNION_CHARTS)` "
         "(chart 0 on every edge) and **reduced, stereographic** = the same in `Rotation_form::STEREOGRAPHIC`, both on the standard "
         "collection with the optimal incidence tree and its well-formed selection; **naive trigonometric (2.1)** and "
@@ -638,8 +731,8 @@ int main(int argc, char** argv)
         "one equation; *build s* = wall time (`CGAL::Real_timer`) to build the system (for the reduced systems the "
         "constructor of `Reduced_system` only; *prep s* is the preceding `standardize()` + `optimal_incidence_tree()` + "
         "`select_well_formed_incidences()`); *vars ×*, *terms ×* = naive / reduced (quaternion charts), *terms × st.* = naive / "
-        "reduced (stereographic). A reduced system marked * is not square (`is_square()` false: an under- or over-constrained "
-        "scene; see the CSV note). A cell that takes more than " << cap << " s to build is skipped (its child process is "
+        "reduced (stereographic). A reduced system marked * is not square (`is_square()` false; the CSV column `note` "
+        "gives its `diagnostic()`). A cell that takes more than " << cap << " s to build is skipped (its child process is "
         "killed) and marked *skipped*.\n\n"
      << "| scene | bodies | dof | system | coeff. | vars | eqs | deg/var | tot. deg | terms | vars/eq | build s | prep s | vars × | terms × | terms × st. |\n"
      << "|:--|--:|--:|:--|:--|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|\n";
@@ -650,7 +743,7 @@ int main(int argc, char** argv)
       md << "| " << (k == 0 ? "**" + r.scene + "**" : "") << " | "
          << (k == 0 ? std::to_string(r.user_bodies) + " / " + std::to_string(r.standard_bodies) : "") << " | "
          << (k == 0 ? std::to_string(r.dof) : "") << " | " << system_names[k] << (!naive && s.status == OK && !s.square ? " *" : "")
-         << " | " << (naive ? "exact" : s.exact ? "exact" : "interval") << " | ";
+         << " | " << (naive || r.exact ? "exact" : "interval") << " | ";
       if (s.status == OK)
         md << s.vars << " | " << s.eqs << " | " << s.max_var_degree << " | " << s.max_total_degree << " | " << s.terms << " | "
            << s.max_vars_per_eq << " | " << fixed(s.seconds, s.seconds < 1 ? 4 : 2) << " | ";
@@ -687,8 +780,8 @@ int main(int argc, char** argv)
     md << "| " << g;
     for (int k = 0; k < 4; ++k)
       md << " | " << (nt[k] ? fixed(std::exp(lt[k] / nt[k]), 0) : "–") << (skipped[k] ? " (" + std::to_string(skipped[k]) + ")" : "");
-    for (int k = 0; k < 2; ++k) md << " | " << (nr[k] ? fixed(std::exp(lv[k] / nr[k]), 2) : "–");
-    for (int k = 0; k < 2; ++k) md << " | " << (nr[k] ? fixed(std::exp(lr[k] / nr[k]), 1) : "–");
+    for (int k = 0; k < 2; ++k) md << " | " << (nr[k] ? ratio_text(std::exp(lv[k] / nr[k])) : "–");
+    for (int k = 0; k < 2; ++k) md << " | " << (nr[k] ? ratio_text(std::exp(lr[k] / nr[k])) : "–");
     md << " |\n";
   }
   const std::string svg_name = prefix.substr(prefix.find_last_of('/') + 1) + ".svg";

@@ -67,7 +67,6 @@ Polynomial_system<CGAL::Gmpq> naive_system(const Rigid_body_collection<Traits>& 
   if (home >= nb || !rigid[home]) throw Input_error("naive system: the frame body '" + user.frame() + "' is not a body of 3 or more points");
   // variables
   std::vector<std::size_t> first(nb, std::size_t(-1));
-  const std::size_t per = form == Naive_form::TRIGONOMETRIC ? 9 : 6;
   for (std::size_t b = 0; b < nb; ++b) {
     if (!rigid[b] || b == home) continue;
     first[b] = sys.variable_names.size();

@@ -21,6 +21,7 @@
 #include <cstdint>
 #include <map>
 #include <random>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -135,7 +136,8 @@ greedy keeps the ones needed), then the collection's distances.
 The points of a body outside the covering set that no covering body contains are private to
 it: nothing else refers to them, so they need no equation. A distance between two points that
 lie together in one covering body is left out too: that body's rigidity holds it, and
-`standardize()` checked that the two bodies agree on it (a shared pair).
+`standardize()` checked that the two bodies agree on it (a shared pair). For the same
+reason a pair that several bodies outside the covering set fix is listed once.
 */
 template <class Traits>
 std::vector<Constraint> system_constraints(const Rigid_body_collection<Traits>& c, const Incidence_tree& tree,
@@ -158,12 +160,14 @@ std::vector<Constraint> system_constraints(const Rigid_body_collection<Traits>& 
       if (c.body(b).contains(p) && c.body(b).contains(q)) return true;
     return false;
   };
+  std::set<std::pair<std::size_t, std::size_t>> emitted; // a pair two bodies fix is one constraint
   for (std::size_t b : tree.non_covering) {
     std::vector<std::size_t> pts;
     for (std::size_t p : c.body(b).points) if (covered[p]) pts.push_back(p);
     for (std::size_t i = 0; i < pts.size(); ++i)
       for (std::size_t j = i + 1; j < pts.size(); ++j) {
         if (in_one_covering_body(pts[i], pts[j])) continue;
+        if (!emitted.insert({pts[i], pts[j]}).second) continue; // standardize() checked the bodies agree on it
         Constraint k;
         k.origin = Constraint::BODY_DISTANCE;
         k.a = pts[i];
