@@ -51,7 +51,7 @@ int print(const RI::Rigid_body_collection<Traits>& c, const RI::Incidence_tree& 
           const std::vector<int>& charts, RI::Rotation_form form, bool json, const std::string& scene_file, long naive,
           const std::string& coefficients)
 {
-  typename std::conditional<RI::internal::is_interval_nt<NT>::value, CGAL::Protect_FPU_rounding<true>, int>::type guard{};
+  RI::internal::Rounding_guard<NT> guard;
   (void)guard;
   RI::Reduced_system<Traits, NT> r(c, t, s, charts, form);
   const auto& p = r.parametrization();

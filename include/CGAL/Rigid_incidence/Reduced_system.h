@@ -82,7 +82,7 @@ public:
                  const std::vector<int>& placements = {})
     : c_(c), tree_(tree), p_(new Parametrization(c, tree, charts, form, placements))
   {
-    typename std::conditional<internal::is_interval_nt<NT>::value, CGAL::Protect_FPU_rounding<true>, int>::type guard{};
+    internal::Rounding_guard<NT> guard;
     (void)guard;
     const std::vector<Constraint> ks = system_constraints(c, tree, selection);
     independence_ = constraint_independence(c, tree.covering_set, ks);

@@ -409,10 +409,7 @@ public:
 
 private:
   static constexpr double kTranslation = 1e300; // placeholder box until the bound is known
-  struct Guard
-  {
-    typename std::conditional<internal::is_interval_nt<NT>::value, CGAL::Protect_FPU_rounding<true>, int>::type p{};
-  };
+  typedef internal::Rounding_guard<NT> Guard; // FPU rounding upward while double intervals compute
   struct Side
   {
     std::size_t body;  // npos for a free point
