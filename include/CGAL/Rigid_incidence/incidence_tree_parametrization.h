@@ -144,8 +144,6 @@ public:
                         std::to_string(tree.edges.size()) + " tree edges");
     if (placements.empty()) placements.assign(nb, 0);
     edge_of_child_.assign(nb, npos);
-    in_tree_.assign(nb, false);
-    for (std::size_t b : tree.covering_set) in_tree_[b] = true;
     coordinates_.resize(nb);
     for (std::size_t b : tree.covering_set) coordinates_[b] = body_coordinates(b, placements.size() > b ? placements[b] : 0);
     // variables: per edge its rotation, then its translation
@@ -386,10 +384,6 @@ public:
     std::array<Rational, 3> Xa = position(a, p, L), Xb = position(b, p, L);
     return sub(Xa[std::size_t(coordinate - 1)], Xb[std::size_t(coordinate - 1)]);
   }
-
-  /// Brings a rational function to the polynomial numerator of r = 0 (the denominators are
-  /// products of D_e, which never vanish on the charts' boxes).
-  static const Polynomial& numerator(const Rational& r) { return r.num; }
 
   /// The parent of body `b` in the tree, or `npos`.
   std::size_t parent_of(std::size_t b) const
@@ -730,7 +724,6 @@ private:
   std::vector<std::pair<double, double>> box_;
   std::vector<Edge_parameters> edges_;
   std::vector<std::size_t> edge_of_child_, free_variable_;
-  std::vector<bool> in_tree_;
   std::vector<std::vector<Point>> coordinates_;
   std::vector<std::array<Polynomial, 9>> M_;
   std::vector<std::array<NT, 9>> A_;
