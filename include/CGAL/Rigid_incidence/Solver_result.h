@@ -1,0 +1,145 @@
+// Copyright (c) 2026 Rigid_incidence contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// What the subdivision solver returns: every box it leaves, in exactly one class (certified,
+// unknown, pending), as IBEX reports them, and its parameters and statistics.
+
+#ifndef CGAL_RIGID_INCIDENCE_SOLVER_RESULT_H
+#define CGAL_RIGID_INCIDENCE_SOLVER_RESULT_H
+
+#include <cstddef>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Rigid_incidence {
+
+/// \ingroup PkgRigidIncidenceSolver
+/// How the solver chooses the variable to split a box in.
+enum class Split_strategy {
+  LARGEST_WIDTH, ///< the variable whose interval is widest relative to the initial box (default)
+  ROUND_ROBIN    ///< the variables in turn, whatever their widths
+};
+
+/*!
+\ingroup PkgRigidIncidenceSolver
+\brief Parameters of `Subdivision_solver`.
+
+Widths are absolute, in the units of each variable.
+*/
+struct Subdivision_solver_parameters
+{
+  /// A certified root is tightened by interval Newton until its enclosure is at most this wide
+  /// in every variable (or until the precision cannot tighten it more).
+  double tolerance = 1e-12;
+  /// A box at most this wide in every variable that is neither excluded nor certified is not
+  /// split further: it becomes an `UNKNOWN` box. 0: the default, 1e-9 times the widest
+  /// variable of the initial box.
+  double minimal_width = 0;
+  /// Bits of the MPFR mantissa when the interval type is `CGAL::Gmpfi` (ignored for
+  /// `CGAL::Interval_nt`).
+  unsigned precision = 53;
+  /// With exact coefficients (`CGAL::Gmpq` or `double`) and MPFI available: a small cluster of
+  /// unknown boxes (a root the working precision could not certify, e.g. two roots 1e-8
+  /// apart in double) is solved again with `CGAL::Gmpfi` at twice the working precision (at
+  /// least 106 bits), as long as that is at most this many bits (0: never).
+  unsigned maximal_precision = 212;
+  /// At most this many boxes are visited; what is left is `PENDING`.
+  std::size_t maximal_boxes = 200000;
+  /// Wall-clock budget in seconds (0: none); what is left when it runs out is `PENDING`.
+  double maximal_seconds = 0;
+  /// Fast, non-certified mode: plain double subdivision, Newton polish, no existence proof.
+  /// Roots come back with `certified == false`.
+  bool fast = false;
+  /// Preconditioning by the inverse Jacobian at the box centre before domain reduction.
+  bool preconditioning = true;
+  /// Domain reduction by projected-polyhedron clipping (else plain bisection).
+  bool domain_reduction = true;
+  /// How to choose the variable to split.
+  Split_strategy split = Split_strategy::LARGEST_WIDTH;
+};
+
+/// \ingroup PkgRigidIncidenceSolver
+/// The class of a box the solver leaves.
+enum class Box_class {
+  CERTIFIED, ///< exactly one root in the box, proved (Krawczyk)
+  UNKNOWN,   ///< minimal width reached without a proof; `reason` says why
+  PENDING    ///< the box or time budget ran out before the box was decided
+};
+
+/// \ingroup PkgRigidIncidenceSolver
+/// A root the solver found.
+template <class IT>
+struct Solver_root
+{
+  std::vector<IT> enclosure;       ///< per variable, an interval containing the root
+  std::vector<double> approximation; ///< per variable, a point of the enclosure
+  /// proved: the (interval-inflated) Krawczyk box holds exactly one root, and the root is in
+  /// `enclosure`; false only in fast mode
+  bool certified = false;
+  /// the enclosure meets the boundary of the search box (the root may lie just outside it)
+  bool on_boundary = false;
+  /// an upper bound of max_i |f_i| over `enclosure`
+  double residual = 0;
+};
+
+/// \ingroup PkgRigidIncidenceSolver
+/// A region the solver could not decide: one box, or a cluster of touching boxes.
+template <class IT>
+struct Solver_unresolved
+{
+  Box_class kind = Box_class::UNKNOWN; ///< `UNKNOWN` or `PENDING`
+  /// why: "possible multiple root", "precision exhausted", "not certified at minimal width",
+  /// "box budget exhausted", "time budget exhausted"
+  std::string reason;
+  std::vector<IT> box;             ///< per variable, the hull of the cluster's boxes
+  std::size_t boxes = 1;           ///< how many boxes the cluster merges
+  /// the Jacobian at the cluster's centre is numerically rank-deficient
+  bool rank_deficient = false;
+};
+
+/// \ingroup PkgRigidIncidenceSolver
+/// Counters of one solve.
+struct Solver_statistics
+{
+  std::size_t boxes = 0;            ///< boxes visited
+  std::size_t excluded = 0;         ///< boxes excluded by a strict sign of some equation
+  std::size_t splits = 0;           ///< boxes split in two
+  std::size_t reductions = 0;       ///< domain reductions that shrank a box
+  std::size_t krawczyk_tests = 0;   ///< existence / uniqueness tests
+  std::size_t certified_boxes = 0;  ///< boxes certified (before duplicates were merged)
+  std::size_t duplicates = 0;       ///< certified roots merged into one found before
+  std::size_t precision_retries = 0;///< boxes solved again at a higher precision
+  std::size_t maximal_depth = 0;    ///< deepest subdivision level
+  double seconds = 0;               ///< wall-clock time of the solve
+};
+
+/*!
+\ingroup PkgRigidIncidenceSolver
+\brief The result of `Subdivision_solver::solve()`: every box the solver left, each in exactly
+one class.
+*/
+template <class IT>
+struct Solver_result
+{
+  std::vector<Solver_root<IT>> roots;            ///< certified (or, in fast mode, approximate) roots
+  std::vector<Solver_unresolved<IT>> unresolved; ///< unknown and pending regions
+  /// empty, or what the unresolved boxes suggest, e.g. "positive_dimensional: Jacobian
+  /// rank-deficient along a chain of 812 boxes"
+  std::string diagnosis;
+  Solver_statistics statistics;
+  bool fast = false;                             ///< solved in the fast, non-certified mode
+  /// no unknown or pending box is left and every root is certified
+  bool complete() const
+  {
+    if (!unresolved.empty() || fast) return false;
+    for (const auto& r : roots) if (!r.certified) return false;
+    return true;
+  }
+};
+
+} // namespace Rigid_incidence
+} // namespace CGAL
+
+#endif

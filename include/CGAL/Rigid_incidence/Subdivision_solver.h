@@ -1,0 +1,891 @@
+// Copyright (c) 2026 Rigid_incidence contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// The certified interval Bernstein subdivision solver (elimination_generically_rigid_3d.txt
+// Section 4; decomposition_subdivision_solver.txt Section 3.1): every real root of n
+// polynomial equations in n variables in a box, each certified by a Krawczyk test or left in
+// an unresolved box with its reason.
+//
+// Per box: (1) exclusion: some equation's Bernstein coefficients share a strict sign;
+// (2) domain reduction: projected-polyhedron clipping of the equations preconditioned by the
+// inverse Jacobian at the box centre (so near a simple root each preconditioned equation is
+// nearly x_j - x_j*, and the clip converges quadratically); (3) certification: the Krawczyk
+// operator on a slightly inflated box (so a root on a face is certified in one box) proves
+// existence and uniqueness, and interval Newton (Krawczyk contraction) then tightens the
+// enclosure to the tolerance; (4) otherwise split at the midpoint of the widest variable
+// (relative to the initial box) by de Casteljau, or stop at the minimal width (unknown).
+
+#ifndef CGAL_RIGID_INCIDENCE_SUBDIVISION_SOLVER_H
+#define CGAL_RIGID_INCIDENCE_SUBDIVISION_SOLVER_H
+
+#include <CGAL/Rigid_incidence/Input_error.h>
+#include <CGAL/Rigid_incidence/Polynomial_system.h>
+#include <CGAL/Rigid_incidence/Solver_result.h>
+#include <CGAL/Rigid_incidence/internal/Bernstein_tensor.h>
+#include <CGAL/Rigid_incidence/internal/interval_ops.h>
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <numeric>
+#include <optional>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+namespace CGAL {
+namespace Rigid_incidence {
+
+/*!
+\ingroup PkgRigidIncidenceSolver
+\brief Certified interval Bernstein subdivision solver for square polynomial systems over a box.
+
+\tparam IT the interval type of the arithmetic: `CGAL::Interval_nt<false>` (double, fast) or
+`CGAL::Gmpfi` (MPFI: correctly rounded intervals at `parameters().precision` bits).
+
+Each equation is kept as a tensor-product Bernstein array over the variables it involves
+only. Every box the solver leaves is in exactly one class of `Box_class`; a root is never
+dropped: it is certified, or inside an unknown or pending box.
+*/
+template <class IT = CGAL::Interval_nt<false>>
+class Subdivision_solver
+{
+  typedef internal::Interval_ops<IT> O;
+  typedef typename O::Bound Bound;
+  typedef internal::Tensor_shape Shape;
+  typedef Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic> Matrix;
+  typedef Eigen::Matrix<double, Eigen::Dynamic, 1> Vector;
+
+public:
+  typedef IT Interval;  ///< the interval type
+
+  /// A solver with the given parameters.
+  explicit Subdivision_solver(const Subdivision_solver_parameters& p = Subdivision_solver_parameters()) : p_(p) {}
+  /// The parameters.
+  const Subdivision_solver_parameters& parameters() const { return p_; }
+
+  /*!
+  Every real root of `system` (n equations in n variables) in `system.box`.
+  \tparam NT the coefficient type: `CGAL::Gmpq` (exact), `CGAL::Interval_nt<false>`,
+  `CGAL::Gmpfi` or `double` (taken as exact).
+  \throws Input_error if the system is not square, has no variable, has an identically zero
+  equation, or the box is not a nonempty finite box with one interval per variable.
+  */
+  template <class NT>
+  Solver_result<IT> solve(const Polynomial_system<NT>& system) const
+  {
+    check(system);
+    internal::Solver_precision_guard<IT> guard(p_.precision);
+    Run run(*this, system);
+    run.go();
+    return run.result;
+  }
+
+private:
+  struct Equation
+  {
+    Shape shape;
+    std::vector<IT> power;               // power-basis coefficients, dense over `shape`
+    std::vector<double> power_d;         // rounded to double (estimates, fast mode)
+    std::vector<Shape> dshape;           // per local variable: shape of the derivative
+    std::vector<std::vector<IT>> dpower;  // per local variable: the derivative's power coefficients
+    std::vector<std::vector<double>> dpower_d;
+  };
+
+  struct Node
+  {
+    std::vector<Bound> lo, hi;
+    std::vector<std::vector<IT>> b;      // per equation, Bernstein array on [lo, hi]
+    std::size_t depth = 0;
+  };
+
+  struct Found
+  {
+    Solver_root<IT> root;
+    std::vector<Bound> klo, khi;         // the box in which the root is proved unique
+  };
+
+  template <class NT>
+  void check(const Polynomial_system<NT>& s) const
+  {
+    const std::size_t n = s.number_of_variables();
+    if (n == 0) throw Input_error("Subdivision_solver: the system has no variable");
+    if (s.number_of_equations() != n)
+      throw Input_error("Subdivision_solver: " + std::to_string(s.number_of_equations()) + " equations in " + std::to_string(n) +
+                        " variables; the solver takes square systems (see Solution_plan for others)");
+    if (s.box.size() != n)
+      throw Input_error("Subdivision_solver: the box has " + std::to_string(s.box.size()) + " intervals for " + std::to_string(n) + " variables");
+    for (std::size_t j = 0; j < n; ++j) {
+      const auto& b = s.box[j];
+      if (!std::isfinite(b.first) || !std::isfinite(b.second) || !(b.first < b.second))
+        throw Input_error("Subdivision_solver: the interval of variable " + name(s, j) + " is not a nonempty finite interval [" +
+                          std::to_string(b.first) + ", " + std::to_string(b.second) + "]");
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+      if (s.equations[i].number_of_variables() != n)
+        throw Input_error("Subdivision_solver: equation " + std::to_string(i) + " is in " +
+                          std::to_string(s.equations[i].number_of_variables()) + " variables, the system in " + std::to_string(n));
+      if (s.equations[i].is_zero())
+        throw Input_error("Subdivision_solver: equation " + std::to_string(i) +
+                          (i < s.labels.size() && !s.labels[i].empty() ? " (" + s.labels[i] + ")" : std::string()) +
+                          " is identically zero: the solution set is not finite");
+    }
+  }
+  template <class NT> static std::string name(const Polynomial_system<NT>& s, std::size_t j)
+  {
+    return j < s.variable_names.size() && !s.variable_names[j].empty() ? s.variable_names[j] : "x" + std::to_string(j);
+  }
+
+  // One solve: the state shared by the steps.
+  struct Run
+  {
+    const Subdivision_solver& S;
+    const Subdivision_solver_parameters& P;
+    std::size_t n;
+    std::vector<Equation> eq;
+    std::vector<Bound> dlo, dhi;          // the search box
+    std::vector<double> initial_width;    // per variable
+    double min_width;
+    bool exact_coefficients;
+    Shape full;                           // all variables, the highest degree of each
+    bool precondition;
+    std::vector<Found> found;
+    std::vector<Node> unknown_nodes;
+    std::vector<std::string> unknown_reason;
+    std::vector<char> unknown_rank_deficient;
+    std::vector<Node> pending_nodes;
+    std::string pending_reason;
+    Solver_result<IT> result;
+    std::chrono::steady_clock::time_point start;
+    std::function<void(const std::vector<Bound>&, const std::vector<Bound>&, Solver_result<IT>&)> retry;
+
+    template <class NT>
+    Run(const Subdivision_solver& s, const Polynomial_system<NT>& sys) : S(s), P(s.p_), n(sys.number_of_variables())
+    {
+      exact_coefficients = std::is_same<NT, CGAL::Gmpq>::value || std::is_same<NT, double>::value;
+      for (const auto& f : sys.equations) eq.push_back(make_equation(f));
+      std::vector<unsigned> dmax(n, 0);
+      for (const auto& e : eq)
+        for (std::size_t k = 0; k < e.shape.variables.size(); ++k) dmax[e.shape.variables[k]] = (std::max)(dmax[e.shape.variables[k]], e.shape.degrees[k]);
+      std::vector<std::size_t> all(n);
+      std::iota(all.begin(), all.end(), std::size_t(0));
+      full.set(all, dmax);
+      // the dense preconditioned arrays cost full.size per equation: only when small
+      precondition = P.preconditioning && P.domain_reduction && full.size * n <= 40000;
+      double widest = 0;
+      for (std::size_t j = 0; j < n; ++j) {
+        dlo.push_back(O::bound_from_double(sys.box[j].first));
+        dhi.push_back(O::bound_from_double(sys.box[j].second));
+        initial_width.push_back(sys.box[j].second - sys.box[j].first);
+        widest = (std::max)(widest, initial_width.back());
+      }
+      min_width = P.minimal_width > 0 ? P.minimal_width : 1e-9 * widest;
+      if constexpr (std::is_same<NT, CGAL::Gmpq>::value || std::is_same<NT, double>::value) {
+#ifdef CGAL_USE_MPFI
+        const unsigned bits = (std::max)(2 * O::bits(), 106u);
+        if (!P.fast && P.maximal_precision >= bits) {
+          // solve a region again with CGAL::Gmpfi at twice the precision
+          retry = [&sys, this, bits](const std::vector<Bound>& lo, const std::vector<Bound>& hi, Solver_result<IT>& out) {
+            Polynomial_system<NT> sub = sys;
+            for (std::size_t j = 0; j < n; ++j) {
+              // the double box must contain the region: round outward
+              sub.box[j] = {std::nextafter(O::to_double(lo[j]), -std::numeric_limits<double>::infinity()),
+                            std::nextafter(O::to_double(hi[j]), std::numeric_limits<double>::infinity())};
+              sub.box[j].first = (std::max)(sub.box[j].first, O::to_double(dlo[j]));
+              sub.box[j].second = (std::min)(sub.box[j].second, O::to_double(dhi[j]));
+            }
+            Subdivision_solver_parameters q = P;
+            q.precision = bits;
+            q.minimal_width = min_width / 4;
+            q.maximal_boxes = P.maximal_boxes / 8 + 1;
+            Solver_result<CGAL::Gmpfi> r = Subdivision_solver<CGAL::Gmpfi>(q).solve(sub);
+            for (const auto& x : r.roots) {
+              Solver_root<IT> y;
+              for (const auto& e : x.enclosure) y.enclosure.push_back(O::from(e));
+              y.approximation = x.approximation;
+              y.certified = x.certified;
+              y.on_boundary = x.on_boundary;
+              y.residual = x.residual;
+              out.roots.push_back(y);
+            }
+            for (const auto& x : r.unresolved) {
+              Solver_unresolved<IT> y;
+              y.kind = x.kind;
+              y.reason = x.reason.find(" bits)") == std::string::npos ? x.reason + " (at " + std::to_string(bits) + " bits)" : x.reason;
+              for (const auto& e : x.box) y.box.push_back(O::from(e));
+              y.boxes = x.boxes;
+              y.rank_deficient = x.rank_deficient;
+              out.unresolved.push_back(y);
+            }
+            out.statistics.boxes += r.statistics.boxes;
+            out.statistics.krawczyk_tests += r.statistics.krawczyk_tests;
+          };
+        }
+#endif
+      }
+    }
+
+    template <class NT> Equation make_equation(const Sparse_polynomial<NT>& f)
+    {
+      Equation e;
+      std::vector<std::size_t> vars = f.variables();
+      std::vector<unsigned> degs;
+      for (std::size_t v : vars) degs.push_back(f.degree(v));
+      e.shape.set(vars, degs);
+      e.power.assign(e.shape.size, IT(0));
+      for (const auto& t : f.terms()) {
+        std::size_t idx = 0;
+        for (std::size_t k = 0; k < vars.size(); ++k) idx += t.first[vars[k]] * e.shape.strides[k];
+        e.power[idx] = e.power[idx] + O::from(t.second);
+      }
+      for (const IT& c : e.power) e.power_d.push_back(CGAL::to_double(c));
+      for (std::size_t k = 0; k < vars.size(); ++k) {
+        std::vector<unsigned> dd = degs;
+        dd[k] -= 1;
+        Shape ds;
+        ds.set(vars, dd);
+        std::vector<double> dp(ds.size, 0.0);
+        std::vector<IT> dpi(ds.size, IT(0));
+        for (std::size_t idx = 0; idx < e.shape.size; ++idx) {
+          std::size_t ik = (idx / e.shape.strides[k]) % (degs[k] + 1);
+          if (ik == 0) continue;
+          // the same multi-index with i_k - 1 in the derivative's shape
+          std::size_t rest = idx, di = 0;
+          for (std::size_t m = 0; m < vars.size(); ++m) {
+            std::size_t im = rest / e.shape.strides[m];
+            rest -= im * e.shape.strides[m];
+            di += (m == k ? im - 1 : im) * ds.strides[m];
+          }
+          dp[di] += double(ik) * e.power_d[idx];
+          dpi[di] = dpi[di] + IT(int(ik)) * e.power[idx];
+        }
+        e.dshape.push_back(ds);
+        e.dpower.push_back(dpi);
+        e.dpower_d.push_back(dp);
+      }
+      return e;
+    }
+
+    // ---- small helpers --------------------------------------------------------------
+    static IT pt(const Bound& b) { return O::point(b); }
+    static IT width_interval(const Bound& lo, const Bound& hi) { return pt(hi) - pt(lo); }
+    static Bound midpoint(const Bound& lo, const Bound& hi)
+    {
+      Bound m = O::lower((pt(lo) + pt(hi)) / 2);
+      if (!(m > lo) || !(m < hi)) m = O::upper((pt(lo) + pt(hi)) / 2);
+      return m;
+    }
+    double width(const Node& x, std::size_t j) const { return O::upper_double(width_interval(x.lo[j], x.hi[j])); }
+    std::vector<double> center_d(const std::vector<Bound>& lo, const std::vector<Bound>& hi) const
+    {
+      std::vector<double> c(n);
+      for (std::size_t j = 0; j < n; ++j) c[j] = 0.5 * O::to_double(lo[j]) + 0.5 * O::to_double(hi[j]);
+      return c;
+    }
+    double seconds() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); }
+
+    std::vector<IT> bernstein(const Equation& e, const std::vector<Bound>& lo, const std::vector<Bound>& hi) const
+    {
+      std::vector<IT> l, w;
+      for (std::size_t v : e.shape.variables) { l.push_back(pt(lo[v])); w.push_back(width_interval(lo[v], hi[v])); }
+      return internal::to_bernstein(e.shape, e.power, l, w);
+    }
+    Node make_node(const std::vector<Bound>& lo, const std::vector<Bound>& hi, std::size_t depth) const
+    {
+      Node x;
+      x.lo = lo;
+      x.hi = hi;
+      x.depth = depth;
+      for (const auto& e : eq) x.b.push_back(bernstein(e, lo, hi));
+      return x;
+    }
+
+    // f and the Jacobian at a point, in double.
+    void evaluate_d(const std::vector<double>& x, Vector& f, Matrix& J) const
+    {
+      f.resize(n);
+      J.setZero(n, n);
+      for (std::size_t i = 0; i < n; ++i) {
+        const Equation& e = eq[i];
+        std::vector<double> xl;
+        for (std::size_t v : e.shape.variables) xl.push_back(x[v]);
+        f[i] = internal::horner(e.shape, e.power_d, xl);
+        for (std::size_t k = 0; k < e.shape.variables.size(); ++k) J(i, e.shape.variables[k]) = internal::horner(e.dshape[k], e.dpower_d[k], xl);
+      }
+    }
+
+    // ---- the main loop ---------------------------------------------------------------
+    void go()
+    {
+      start = std::chrono::steady_clock::now();
+      result.fast = P.fast;
+      std::vector<Node> stack;
+      stack.push_back(make_node(dlo, dhi, 0));
+      while (!stack.empty()) {
+        if (result.statistics.boxes >= P.maximal_boxes || (P.maximal_seconds > 0 && seconds() > P.maximal_seconds)) {
+          pending_reason = result.statistics.boxes >= P.maximal_boxes ? "box budget exhausted" : "time budget exhausted";
+          for (auto& x : stack) pending_nodes.push_back(std::move(x));
+          stack.clear();
+          break;
+        }
+        Node x = std::move(stack.back());
+        stack.pop_back();
+        ++result.statistics.boxes;
+        result.statistics.maximal_depth = (std::max)(result.statistics.maximal_depth, x.depth);
+        process(x, stack);
+      }
+      finish();
+    }
+
+    bool excluded(const Node& x) const
+    {
+      for (const auto& b : x.b) if (internal::strict_sign(b)) return true;
+      return false;
+    }
+
+    bool inside_found(const Node& x) const
+    {
+      for (const auto& f : found) {
+        bool in = true;
+        for (std::size_t j = 0; j < n && in; ++j) in = !(x.lo[j] < f.klo[j]) && !(f.khi[j] < x.hi[j]);
+        if (in) return true;
+      }
+      return false;
+    }
+
+    void process(Node& x, std::vector<Node>& stack)
+    {
+      bool converging = false;
+      for (int round = 0; round < 32; ++round) {
+        if (excluded(x)) { ++result.statistics.excluded; return; }
+        if (!P.domain_reduction) break;
+        double ratio = 1;
+        if (!reduce(x, ratio)) { ++result.statistics.excluded; return; }
+        if (ratio < 0.5) converging = true;
+        if (ratio > 0.5) break;  // weak contraction: split instead
+      }
+      if (!found.empty() && inside_found(x)) return;  // its only possible root is known
+      double rel = 0;
+      bool small = true;
+      for (std::size_t j = 0; j < n; ++j) {
+        double w = width(x, j);
+        rel = (std::max)(rel, w / initial_width[j]);
+        if (w > min_width) small = false;
+      }
+      if (converging || rel <= 1.0 / 16 || small) {
+        if (P.fast ? polish(x) : certify(x)) return;
+      }
+      // the variable to split
+      std::size_t best = n;
+      double score = -1;
+      for (std::size_t k = 0; k < n; ++k) {
+        std::size_t j = P.split == Split_strategy::ROUND_ROBIN ? (x.depth + k) % n : k;
+        double w = width(x, j);
+        if (w <= min_width || !O::splittable(x.lo[j], x.hi[j])) continue;
+        double s = w / initial_width[j];
+        if (P.split == Split_strategy::ROUND_ROBIN) { best = j; break; }
+        if (s > score) { score = s; best = j; }
+      }
+      if (best == n) { make_unknown(x, small); return; }
+      Node l, r;
+      split_node(x, best, l, r);
+      ++result.statistics.splits;
+      stack.push_back(std::move(r));
+      stack.push_back(std::move(l));
+    }
+
+    void split_node(const Node& x, std::size_t j, Node& l, Node& r) const
+    {
+      Bound m = midpoint(x.lo[j], x.hi[j]);
+      IT t = (pt(m) - pt(x.lo[j])) / width_interval(x.lo[j], x.hi[j]);
+      l.lo = x.lo; l.hi = x.hi; l.hi[j] = m;
+      r.lo = x.lo; r.hi = x.hi; r.lo[j] = m;
+      l.depth = r.depth = x.depth + 1;
+      l.b.resize(n);
+      r.b.resize(n);
+      for (std::size_t i = 0; i < n; ++i) {
+        std::size_t k = eq[i].shape.local(j);
+        if (k == std::size_t(-1)) { l.b[i] = x.b[i]; r.b[i] = x.b[i]; continue; }
+        internal::split(eq[i].shape, x.b[i], k, t, l.b[i], r.b[i]);
+      }
+    }
+
+    // Projected-polyhedron clipping (preconditioned when affordable). Returns false if the
+    // box holds no root; `ratio` is the largest remaining fraction of a variable's width.
+    bool reduce(Node& x, double& ratio)
+    {
+      std::vector<double> tu(n, 0.0), tv(n, 1.0);
+      bool done = false;
+      if (precondition) {
+        Vector f;
+        Matrix J;
+        evaluate_d(center_d(x.lo, x.hi), f, J);
+        for (std::size_t j = 0; j < n; ++j) J.col(j) *= width(x, j);
+        Eigen::FullPivLU<Matrix> lu(J);
+        if (lu.isInvertible() && lu.rcond() > 1e-12) {
+          Matrix M = lu.inverse();
+          std::vector<std::vector<IT>> F;
+          for (std::size_t i = 0; i < n; ++i) F.push_back(internal::embed(eq[i].shape, x.b[i], full));
+          std::vector<IT> g(full.size);
+          for (std::size_t k = 0; k < n; ++k) {
+            std::fill(g.begin(), g.end(), IT(0));
+            for (std::size_t i = 0; i < n; ++i) {
+              if (M(k, i) == 0) continue;
+              IT m(M(k, i));
+              for (std::size_t a = 0; a < full.size; ++a) g[a] = g[a] + m * F[i][a];
+            }
+            for (std::size_t j = 0; j < n; ++j) {
+              double u, v;
+              if (!internal::clip_axis(full, g, j, u, v)) return false;
+              tu[j] = (std::max)(tu[j], u);
+              tv[j] = (std::min)(tv[j], v);
+            }
+          }
+          done = true;
+        }
+      }
+      if (!done) {
+        for (std::size_t i = 0; i < n; ++i) {
+          const Shape& s = eq[i].shape;
+          for (std::size_t k = 0; k < s.variables.size(); ++k) {
+            double u, v;
+            if (!internal::clip_axis(s, x.b[i], k, u, v)) return false;
+            std::size_t j = s.variables[k];
+            tu[j] = (std::max)(tu[j], u);
+            tv[j] = (std::min)(tv[j], v);
+          }
+        }
+      }
+      ratio = 0;
+      for (std::size_t j = 0; j < n; ++j) {
+        if (tu[j] > tv[j]) return false;
+        ratio = (std::max)(ratio, tv[j] - tu[j]);
+      }
+      if (ratio > 0.9) { ratio = 1; return true; }  // not worth the restriction
+      bool changed = false;
+      for (std::size_t j = 0; j < n; ++j) {
+        if (tu[j] <= 0 && tv[j] >= 1) continue;
+        IT w = width_interval(x.lo[j], x.hi[j]);
+        Bound nlo = x.lo[j], nhi = x.hi[j];
+        if (tu[j] > 0) { Bound c = O::lower(pt(x.lo[j]) + w * IT(tu[j])); if (c > nlo) nlo = c; }
+        if (tv[j] < 1) { Bound c = O::upper(pt(x.lo[j]) + w * IT(tv[j])); if (c < nhi) nhi = c; }
+        if (!(nlo < nhi)) continue;  // below the resolution of the bounds: leave it
+        if (nlo == x.lo[j] && nhi == x.hi[j]) continue;
+        IT pu = (pt(nlo) - pt(x.lo[j])) / w, pv = (pt(nhi) - pt(x.lo[j])) / w;
+        for (std::size_t i = 0; i < n; ++i) {
+          std::size_t k = eq[i].shape.local(j);
+          if (k == std::size_t(-1)) continue;
+          x.b[i] = internal::restrict_axis(eq[i].shape, x.b[i], k, pu, pv, nlo == x.lo[j], nhi == x.hi[j]);
+        }
+        x.lo[j] = nlo;
+        x.hi[j] = nhi;
+        changed = true;
+      }
+      if (changed) ++result.statistics.reductions;
+      else ratio = 1;
+      return true;
+    }
+
+    // The Krawczyk operator on the box [lo, hi] with its Bernstein arrays b. Returns false
+    // if it could not be formed (singular midpoint Jacobian). `inside`: K lies in the
+    // interior of the box (one root, unique); `empty`: K misses the box (no root).
+    bool krawczyk(const std::vector<Bound>& lo, const std::vector<Bound>& hi, const std::vector<std::vector<IT>>& b,
+                  std::vector<IT>& K, bool& inside, bool& empty)
+    {
+      // interval Jacobian: the Bernstein differences (tight on large boxes) intersected with
+      // the derivatives evaluated in interval arithmetic (no division by a tiny width)
+      std::vector<std::vector<IT>> J(n, std::vector<IT>(n, IT(0)));
+      Matrix Jm = Matrix::Zero(n, n);
+      std::vector<IT> w(n), X(n);
+      for (std::size_t j = 0; j < n; ++j) { w[j] = width_interval(lo[j], hi[j]); X[j] = O::make(lo[j], hi[j]); }
+      for (std::size_t i = 0; i < n; ++i) {
+        const Shape& s = eq[i].shape;
+        for (std::size_t k = 0; k < s.variables.size(); ++k) {
+          std::size_t j = s.variables[k];
+          const unsigned d = s.degrees[k];
+          const std::size_t st = s.strides[k];
+          bool first = true;
+          Bound mn, mx;
+          s.for_each_fiber(k, [&](std::size_t base) {
+            for (unsigned a = 0; a < d; ++a) {
+              IT diff = (b[i][base + (a + 1) * st] - b[i][base + a * st]) * IT(int(d));
+              if (first) { mn = O::lower(diff); mx = O::upper(diff); first = false; }
+              else { if (O::lower(diff) < mn) mn = O::lower(diff); if (mx < O::upper(diff)) mx = O::upper(diff); }
+            }
+          });
+          if (first) continue;
+          std::vector<IT> xl;
+          for (std::size_t v : s.variables) xl.push_back(X[v]);
+          IT h = internal::horner(eq[i].dshape[k], eq[i].dpower[k], xl);
+          IT bb = O::make(mn, mx) / w[j];
+          Bound l = O::lower(h) < O::lower(bb) ? O::lower(bb) : O::lower(h);
+          Bound u = O::upper(bb) < O::upper(h) ? O::upper(bb) : O::upper(h);
+          J[i][j] = u < l ? bb : O::make(l, u);
+          Jm(i, j) = 0.5 * O::lower_double(J[i][j]) + 0.5 * O::upper_double(J[i][j]);
+        }
+      }
+      Eigen::FullPivLU<Matrix> lu(Jm);
+      if (!lu.isInvertible()) return false;
+      Matrix Y = lu.inverse();
+      if (!Y.allFinite()) return false;
+      ++result.statistics.krawczyk_tests;
+      std::vector<Bound> m(n);
+      std::vector<IT> mi(n);
+      for (std::size_t j = 0; j < n; ++j) { m[j] = midpoint(lo[j], hi[j]); mi[j] = pt(m[j]); }
+      std::vector<IT> fm(n);
+      for (std::size_t i = 0; i < n; ++i) {
+        std::vector<IT> xl;
+        for (std::size_t v : eq[i].shape.variables) xl.push_back(mi[v]);
+        fm[i] = internal::horner(eq[i].shape, eq[i].power, xl);
+      }
+      std::vector<IT> dx(n);
+      for (std::size_t j = 0; j < n; ++j) dx[j] = O::make(lo[j], hi[j]) - mi[j];
+      K.assign(n, IT(0));
+      inside = true;
+      empty = false;
+      for (std::size_t r = 0; r < n; ++r) {
+        IT k = mi[r];
+        for (std::size_t i = 0; i < n; ++i) if (Y(r, i) != 0) k = k - IT(Y(r, i)) * fm[i];
+        for (std::size_t c = 0; c < n; ++c) {
+          IT a = IT(r == c ? 1 : 0);
+          for (std::size_t i = 0; i < n; ++i) if (Y(r, i) != 0) a = a - IT(Y(r, i)) * J[i][c];
+          k = k + a * dx[c];
+        }
+        K[r] = k;
+        if (!(O::lower(k) > lo[r]) || !(O::upper(k) < hi[r])) inside = false;
+        if (O::upper(k) < lo[r] || hi[r] < O::lower(k)) empty = true;
+      }
+      return true;
+    }
+
+    // Tries to prove one root near the box (in the box inflated by 10% each side); on
+    // success records it (tightened, merged with a duplicate) and returns true: the box then
+    // holds no other root.
+    bool certify(Node& x)
+    {
+      // The Krawczyk box: centred at a Newton estimate of the root (so that a root near a
+      // face of the node, or on it, sits near the centre), covering the node with a margin of
+      // 10%, and at least a few thousand units in the last place (a box the clipping shrank
+      // to a point on a face must still hold its root in its interior).
+      const double eps = std::ldexp(1.0, 16 - int(O::bits()));
+      std::vector<Bound> c(n), lo(n), hi(n);
+      std::vector<IT> margin(n);
+      for (std::size_t j = 0; j < n; ++j) {
+        double floor = eps * ((std::max)(std::abs(O::to_double(x.lo[j])), std::abs(O::to_double(x.hi[j]))) + initial_width[j]);
+        margin[j] = width_interval(x.lo[j], x.hi[j]) * IT(0.1) + IT(floor);
+        c[j] = midpoint_or_point(x.lo[j], x.hi[j]);
+      }
+      newton_point(x.lo, x.hi, margin, c);
+      for (std::size_t j = 0; j < n; ++j) {
+        IT a = pt(c[j]) - pt(x.lo[j]), b = pt(x.hi[j]) - pt(c[j]);
+        IT r = (O::upper(a) < O::upper(b) ? b : a) * IT(1.1) + margin[j];
+        Bound rr = O::upper(r);
+        lo[j] = O::lower(pt(c[j]) - pt(rr));
+        hi[j] = O::upper(pt(c[j]) + pt(rr));
+      }
+      std::vector<std::vector<IT>> b;
+      for (const auto& e : eq) b.push_back(bernstein(e, lo, hi));
+      std::vector<IT> K;
+      bool inside, empty;
+      if (!krawczyk(lo, hi, b, K, inside, empty)) return false;
+      if (empty || !inside) return false;
+      ++result.statistics.certified_boxes;
+      // tighten: Z <- K(Z) ∩ Z
+      std::vector<Bound> zlo(n), zhi(n);
+      for (std::size_t j = 0; j < n; ++j) {
+        zlo[j] = O::lower(K[j]) > lo[j] ? O::lower(K[j]) : lo[j];
+        zhi[j] = O::upper(K[j]) < hi[j] ? O::upper(K[j]) : hi[j];
+      }
+      tighten(zlo, zhi);
+      record(zlo, zhi, lo, hi, true);
+      return true;
+    }
+
+    // A few quasi-Newton steps x <- x - Y f(x) in the working precision (Y: the inverse
+    // Jacobian at the start, in double); x is left unchanged if they leave the node widened
+    // by `margin`.
+    void newton_point(const std::vector<Bound>& nlo, const std::vector<Bound>& nhi, const std::vector<IT>& margin, std::vector<Bound>& x)
+    {
+      std::vector<double> xd(n);
+      for (std::size_t j = 0; j < n; ++j) xd[j] = O::to_double(x[j]);
+      Vector f;
+      Matrix J;
+      evaluate_d(xd, f, J);
+      Eigen::FullPivLU<Matrix> lu(J);
+      if (!lu.isInvertible()) return;
+      Matrix Y = lu.inverse();
+      if (!Y.allFinite()) return;
+      std::vector<Bound> y = x;
+      std::vector<IT> yi(n), fy(n);
+      for (int it = 0; it < 6; ++it) {
+        for (std::size_t j = 0; j < n; ++j) yi[j] = pt(y[j]);
+        for (std::size_t i = 0; i < n; ++i) {
+          std::vector<IT> xl;
+          for (std::size_t v : eq[i].shape.variables) xl.push_back(yi[v]);
+          fy[i] = internal::horner(eq[i].shape, eq[i].power, xl);
+        }
+        for (std::size_t j = 0; j < n; ++j) {
+          IT step(0);
+          for (std::size_t i = 0; i < n; ++i) if (Y(j, i) != 0) step = step + IT(Y(j, i)) * fy[i];
+          IT z = yi[j] - step;
+          y[j] = midpoint_or_point(O::lower(z), O::upper(z));
+          if (O::lower(pt(y[j]) + margin[j]) < nlo[j] || nhi[j] < O::upper(pt(y[j]) - margin[j])) return;
+        }
+      }
+      x = y;
+    }
+
+    double max_width(const std::vector<Bound>& lo, const std::vector<Bound>& hi) const
+    {
+      double w = 0;
+      for (std::size_t j = 0; j < n; ++j) w = (std::max)(w, O::upper_double(width_interval(lo[j], hi[j])));
+      return w;
+    }
+
+    void tighten(std::vector<Bound>& zlo, std::vector<Bound>& zhi)
+    {
+      double w = max_width(zlo, zhi);
+      for (int it = 0; it < 64 && w > P.tolerance; ++it) {
+        bool degenerate = false;
+        for (std::size_t j = 0; j < n; ++j) if (!(zlo[j] < zhi[j])) degenerate = true;
+        if (degenerate) break;
+        std::vector<std::vector<IT>> b;
+        for (const auto& e : eq) b.push_back(bernstein(e, zlo, zhi));
+        std::vector<IT> K;
+        bool inside, empty;
+        if (!krawczyk(zlo, zhi, b, K, inside, empty) || empty) break;
+        for (std::size_t j = 0; j < n; ++j) {
+          if (zlo[j] < O::lower(K[j])) zlo[j] = O::lower(K[j]);
+          if (O::upper(K[j]) < zhi[j]) zhi[j] = O::upper(K[j]);
+        }
+        double nw = max_width(zlo, zhi);
+        if (!(nw < 0.9 * w)) { w = nw; break; }
+        w = nw;
+      }
+    }
+
+    void record(const std::vector<Bound>& zlo, const std::vector<Bound>& zhi, const std::vector<Bound>& klo,
+                const std::vector<Bound>& khi, bool certified)
+    {
+      // a root outside the search box is not ours
+      bool boundary = false;
+      for (std::size_t j = 0; j < n; ++j) {
+        if (zhi[j] < dlo[j] || dhi[j] < zlo[j]) return;
+        if (zlo[j] < dlo[j] || dhi[j] < zhi[j] || zlo[j] == dlo[j] || zhi[j] == dhi[j]) boundary = true;
+      }
+      for (auto& f : found) {
+        bool overlap = true, z_in_f = true, f_in_k = true;
+        for (std::size_t j = 0; j < n; ++j) {
+          const auto& e = f.root.enclosure[j];
+          if (zhi[j] < O::lower(e) || O::upper(e) < zlo[j]) overlap = false;
+          if (zlo[j] < f.klo[j] || f.khi[j] < zhi[j]) z_in_f = false;
+          if (O::lower(e) < klo[j] || khi[j] < O::upper(e)) f_in_k = false;
+        }
+        if (!certified) {
+          // fast mode: the same root if the approximations are close
+          double d = 0;
+          for (std::size_t j = 0; j < n; ++j)
+            d = (std::max)(d, std::abs(O::to_double(zlo[j]) - f.root.approximation[j]) / initial_width[j]);
+          if (d < 1e-7) { ++result.statistics.duplicates; return; }
+          continue;
+        }
+        if (overlap && (z_in_f || f_in_k)) {
+          ++result.statistics.duplicates;
+          // keep the tighter enclosure
+          if (max_width(zlo, zhi) < max_width(lower_of(f.root.enclosure), upper_of(f.root.enclosure))) {
+            for (std::size_t j = 0; j < n; ++j) f.root.enclosure[j] = O::make(zlo[j], zhi[j]);
+          }
+          return;
+        }
+      }
+      Found f;
+      f.klo = klo;
+      f.khi = khi;
+      f.root.certified = certified;
+      f.root.on_boundary = boundary;
+      for (std::size_t j = 0; j < n; ++j) {
+        f.root.enclosure.push_back(O::make(zlo[j], zhi[j]));
+        f.root.approximation.push_back(O::to_double(midpoint_or_point(zlo[j], zhi[j])));
+      }
+      double res = 0;
+      for (const auto& e : eq) {
+        std::vector<IT> xl;
+        for (std::size_t v : e.shape.variables) xl.push_back(f.root.enclosure[v]);
+        IT v = internal::horner(e.shape, e.power, xl);
+        res = (std::max)(res, (std::max)(std::abs(O::lower_double(v)), std::abs(O::upper_double(v))));
+      }
+      f.root.residual = res;
+      found.push_back(std::move(f));
+    }
+    static std::vector<Bound> lower_of(const std::vector<IT>& v) { std::vector<Bound> r; for (const auto& x : v) r.push_back(O::lower(x)); return r; }
+    static std::vector<Bound> upper_of(const std::vector<IT>& v) { std::vector<Bound> r; for (const auto& x : v) r.push_back(O::upper(x)); return r; }
+    static Bound midpoint_or_point(const Bound& lo, const Bound& hi) { return lo < hi ? midpoint(lo, hi) : lo; }
+
+    // Fast mode: Newton in double from the box centre; accepted (uncertified) if it
+    // converges inside the inflated box.
+    bool polish(const Node& x)
+    {
+      std::vector<double> c = center_d(x.lo, x.hi), lo(n), hi(n);
+      for (std::size_t j = 0; j < n; ++j) {
+        double w = width(x, j);
+        lo[j] = O::to_double(x.lo[j]) - 0.1 * w;
+        hi[j] = O::to_double(x.hi[j]) + 0.1 * w;
+      }
+      Vector f;
+      Matrix J;
+      bool converged = false;
+      for (int it = 0; it < 30; ++it) {
+        evaluate_d(c, f, J);
+        Eigen::FullPivLU<Matrix> lu(J);
+        if (!lu.isInvertible()) return false;
+        Vector d = lu.solve(f);
+        double step = 0;
+        for (std::size_t j = 0; j < n; ++j) {
+          c[j] -= d[j];
+          step = (std::max)(step, std::abs(d[j]) / initial_width[j]);
+          if (!(c[j] >= lo[j] && c[j] <= hi[j])) return false;
+        }
+        if (step < 1e-15 || step < 1e-3 * P.tolerance) { converged = true; break; }
+      }
+      if (!converged) return false;
+      ++result.statistics.certified_boxes;
+      std::vector<Bound> z(n), kl(n), kh(n);
+      for (std::size_t j = 0; j < n; ++j) {
+        z[j] = O::bound_from_double(c[j]);
+        kl[j] = O::bound_from_double(lo[j]);
+        kh[j] = O::bound_from_double(hi[j]);
+      }
+      record(z, z, kl, kh, false);
+      return true;
+    }
+
+    void make_unknown(Node& x, bool small)
+    {
+      // before giving up, one more certification attempt on the box itself
+      if (!P.fast && certify(x)) return;
+      std::vector<double> c = center_d(x.lo, x.hi);
+      Vector f;
+      Matrix J;
+      evaluate_d(c, f, J);
+      Eigen::JacobiSVD<Matrix> svd(J);
+      const auto& s = svd.singularValues();
+      bool deficient = !(s.size() > 0 && s[0] > 0 && s[s.size() - 1] > 1e-7 * s[0]);
+      std::string reason;
+      if (deficient) reason = "possible multiple root";
+      else if (!small) reason = "precision exhausted";
+      else reason = "not certified at minimal width";
+      unknown_nodes.push_back(std::move(x));
+      unknown_reason.push_back(reason);
+      unknown_rank_deficient.push_back(deficient);
+    }
+
+    // ---- the result ------------------------------------------------------------------
+    void finish()
+    {
+      std::vector<Solver_unresolved<IT>> unknown = cluster(unknown_nodes, Box_class::UNKNOWN);
+      for (auto& u : unknown) {
+        // a small cluster may be a root the precision could not certify: solve it again
+        if (retry && u.boxes <= 256 && unknown.size() <= 16 && pending_nodes.empty()) {
+          ++result.statistics.precision_retries;
+          std::vector<Bound> lo = lower_of(u.box), hi = upper_of(u.box);
+          for (std::size_t j = 0; j < n; ++j) {
+            IT w = width_interval(lo[j], hi[j]) * IT(0.25) + IT(4 * min_width);
+            lo[j] = O::lower(pt(lo[j]) - w);
+            hi[j] = O::upper(pt(hi[j]) + w);
+          }
+          Solver_result<IT> sub;
+          retry(lo, hi, sub);
+          result.statistics.boxes += sub.statistics.boxes;
+          result.statistics.krawczyk_tests += sub.statistics.krawczyk_tests;
+          for (const auto& r : sub.roots) {
+            std::vector<Bound> rl = lower_of(r.enclosure), rh = upper_of(r.enclosure);
+            record(rl, rh, rl, rh, r.certified);
+          }
+          for (auto& v : sub.unresolved) result.unresolved.push_back(v);
+          continue;
+        }
+        result.unresolved.push_back(u);
+      }
+      for (auto& u : cluster(pending_nodes, Box_class::PENDING)) result.unresolved.push_back(u);
+      result.roots.clear();
+      for (auto& f : found) result.roots.push_back(f.root);
+      std::sort(result.roots.begin(), result.roots.end(), [](const Solver_root<IT>& a, const Solver_root<IT>& b) {
+        return a.approximation < b.approximation;
+      });
+      // diagnosis: a long chain of rank-deficient unknown boxes is a curve of solutions
+      for (const auto& u : result.unresolved) {
+        if (u.kind != Box_class::UNKNOWN || !u.rank_deficient || u.boxes < 16) continue;
+        double span = 0;
+        for (const auto& v : u.box) span = (std::max)(span, O::upper_double(v) - O::lower_double(v));
+        if (span < 64 * min_width) continue;
+        result.diagnosis = "positive_dimensional: solution set appears to be positive-dimensional: Jacobian rank-deficient along a chain of " +
+                           std::to_string(u.boxes) + " boxes spanning " + std::to_string(span);
+        break;
+      }
+      result.statistics.seconds = seconds();
+    }
+
+    // Touching boxes of one class become one unresolved region.
+    std::vector<Solver_unresolved<IT>> cluster(std::vector<Node>& nodes, Box_class kind)
+    {
+      const std::size_t m = nodes.size();
+      if (m == 0) return {};
+      std::vector<std::size_t> parent(m), order(m);
+      std::iota(parent.begin(), parent.end(), std::size_t(0));
+      std::iota(order.begin(), order.end(), std::size_t(0));
+      auto find = [&](std::size_t a) { while (parent[a] != a) a = parent[a] = parent[parent[a]]; return a; };
+      std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return nodes[a].lo[0] < nodes[b].lo[0]; });
+      for (std::size_t a = 0; a < m; ++a) {
+        const Node& x = nodes[order[a]];
+        for (std::size_t c = a + 1; c < m && !(x.hi[0] < nodes[order[c]].lo[0]); ++c) {
+          const Node& y = nodes[order[c]];
+          bool touch = true;
+          for (std::size_t j = 0; j < n && touch; ++j) touch = !(x.hi[j] < y.lo[j]) && !(y.hi[j] < x.lo[j]);
+          if (touch) parent[find(order[a])] = find(order[c]);
+        }
+      }
+      std::vector<std::size_t> slot(m, std::size_t(-1));
+      std::vector<Solver_unresolved<IT>> out;
+      std::vector<std::vector<Bound>> hlo, hhi;
+      for (std::size_t a = 0; a < m; ++a) {
+        std::size_t r = find(a);
+        if (slot[r] == std::size_t(-1)) {
+          slot[r] = out.size();
+          Solver_unresolved<IT> u;
+          u.kind = kind;
+          u.boxes = 0;
+          u.reason = kind == Box_class::PENDING ? pending_reason : unknown_reason[a];
+          out.push_back(u);
+          hlo.push_back(nodes[a].lo);
+          hhi.push_back(nodes[a].hi);
+        }
+        std::size_t s = slot[r];
+        auto& u = out[s];
+        ++u.boxes;
+        if (kind == Box_class::UNKNOWN) {
+          if (unknown_rank_deficient[a]) u.rank_deficient = true;
+          // the most telling reason wins
+          if (unknown_reason[a] == "possible multiple root") u.reason = unknown_reason[a];
+        }
+        for (std::size_t j = 0; j < n; ++j) {
+          if (nodes[a].lo[j] < hlo[s][j]) hlo[s][j] = nodes[a].lo[j];
+          if (hhi[s][j] < nodes[a].hi[j]) hhi[s][j] = nodes[a].hi[j];
+        }
+      }
+      for (std::size_t s = 0; s < out.size(); ++s)
+        for (std::size_t j = 0; j < n; ++j) out[s].box.push_back(O::make(hlo[s][j], hhi[s][j]));
+      return out;
+    }
+  };
+
+  Subdivision_solver_parameters p_;
+};
+
+} // namespace Rigid_incidence
+} // namespace CGAL
+
+#endif
