@@ -12,6 +12,9 @@
 #include <nlohmann/json.hpp>
 
 #include "reduce_command.h"
+#include "solve_command.h"
+
+#include <chrono>
 
 #include <algorithm>
 #include <fstream>
@@ -29,6 +32,8 @@ static const char* usage_text =
   "                          [--kernel exact|epick|epeck]\n"
   "  rigid_incidence reduce SCENE.json [--json] [--chart I,J,...] [--form charts|stereographic]\n"
   "                         [--coefficients auto|exact|interval] [--kernel exact|epick|epeck]\n"
+  "  rigid_incidence solve SCENE.json [--json] [--tolerance EPS] [--precision BITS] [--fast]\n"
+  "                        [--svg FILE] [--near CONFIG.json] [--max-boxes N] [--kernel K]\n"
   "  rigid_incidence --help\n"
   "\n"
   "Commands:\n"
@@ -56,6 +61,26 @@ static const char* usage_text =
   "            total_degree, terms [[coefficient, [exponents]]...]}], left_out, square,\n"
   "            diagnostic, naive_variables}; a coefficient is an exact string (\"p/q\") or an\n"
   "            interval [lo, hi].\n"
+  "\n"
+  "  solve     Every real configuration of the scene: the reduced system is solved in every\n"
+  "            chart combination by the certified interval Bernstein subdivision solver, each\n"
+  "            root turned into a configuration (a rotation and translation per body, world\n"
+  "            coordinates per point in the scene's frame body) and checked in the original,\n"
+  "            unreduced system; roots found in two charts are merged. A configuration is\n"
+  "            'certified' when a Krawczyk test proved one root in its box. What could not be\n"
+  "            decided is listed as unresolved regions (unknown: e.g. a possible multiple\n"
+  "            root; pending: the box budget ran out), and the result says 'complete' only\n"
+  "            when there is none. --tolerance EPS (default 1e-12): width of the parameter\n"
+  "            enclosures; --precision BITS (default 53: double intervals; more: MPFI);\n"
+  "            --fast: double precision, Newton polish, nothing certified; --max-boxes N per\n"
+  "            chart combination (default 50000); --svg FILE: the configurations side by\n"
+  "            side as line drawings; --near CONFIG.json: order the configurations by their\n"
+  "            distance to a given one ({\"points\": {label: [x, y, z]}} or a solve --json\n"
+  "            output). --json: {scene, analysis, reduced_system {variables, equations},\n"
+  "            complete, certified, diagnosis, solutions [{certified, parameters, charts,\n"
+  "            bodies {name: {rotation, translation}}, points {label: [x, y, z]},\n"
+  "            max_residual}], unresolved [{class, reason, box, boxes, charts, points}],\n"
+  "            stats}. A scene that is read exits 0 whatever was found.\n"
   "\n"
   "Options:\n"
   "  --json         print the analysis as JSON on standard output instead of text; keys:\n"
@@ -92,11 +117,13 @@ struct Options
   std::string scene, dot, dot_seam, kernel = "exact";
   std::string charts, form, coefficients;
   bool json = false;
+  solve_command::Solve_options solve;
 };
 
 template <class Traits>
 int analyze(const Options& o)
 {
+  auto t_start = std::chrono::steady_clock::now();
   RI::Scene scene = RI::read_scene(o.scene);
   RI::Rigid_body_collection<Traits> input = RI::make_collection<Traits>(scene);
   std::vector<std::string> log;
@@ -116,6 +143,9 @@ int analyze(const Options& o)
   RI::Incidence_tree t = RI::optimal_incidence_tree(c);
   RI::Overlap_graph og(c);
   RI::Well_formed_selection wf = RI::select_well_formed_incidences(c, t);
+  if (o.command == "solve")
+    return solve_command::solve(scene, input, c, t, wf, dof, o.solve, o.json, o.scene,
+                                std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count());
   if (o.command == "reduce")
     return reduce_command::reduce(c, t, wf, o.charts, o.form, o.coefficients, o.json, o.scene, 6 * (long(scene.bodies.size()) - 1));
   RI::Incidence_set redundant = RI::redundant_incidences(c, wf);
@@ -419,12 +449,36 @@ int main(int argc, char** argv)
   std::vector<std::string> args(argv + 1, argv + argc);
   if (args.empty()) { std::cerr << usage_text; return 1; }
   if (args[0] == "--help" || args[0] == "-h" || args[0] == "help") { std::cout << usage_text; return 0; }
-  if (args[0] != "analyze" && args[0] != "reduce") { std::cerr << "rigid_incidence: unknown command '" << args[0] << "' (see --help)\n"; return 1; }
+  if (args[0] != "analyze" && args[0] != "reduce" && args[0] != "solve") { std::cerr << "rigid_incidence: unknown command '" << args[0] << "' (see --help)\n"; return 1; }
   Options o;
   o.command = args[0];
   for (std::size_t i = 1; i < args.size(); ++i) {
     const std::string& a = args[i];
     if (a == "--json") o.json = true;
+    else if (a == "--fast") {
+      if (o.command != "solve") { std::cerr << "rigid_incidence: --fast is an option of solve\n"; return 1; }
+      o.solve.fast = true;
+    } else if (a == "--tolerance" || a == "--precision" || a == "--svg" || a == "--near" || a == "--max-boxes") {
+      if (i + 1 >= args.size()) { std::cerr << "rigid_incidence: " << a << " needs a value\n"; return 1; }
+      if (o.command != "solve") { std::cerr << "rigid_incidence: " << a << " is an option of solve\n"; return 1; }
+      const std::string& v = args[++i];
+      try {
+        if (a == "--tolerance") o.solve.tolerance = solve_command::parse_positive(a, v);
+        else if (a == "--precision") {
+          double b = solve_command::parse_positive(a, v);
+          if (b != std::floor(b) || b < 2 || b > 100000) throw RI::Input_error(a + ": '" + v + "' is not a number of bits (2 .. 100000)");
+          o.solve.precision = unsigned(b);
+        } else if (a == "--max-boxes") {
+          double b = solve_command::parse_positive(a, v);
+          if (b != std::floor(b) || b > 1e12) throw RI::Input_error(a + ": '" + v + "' is not a whole number of boxes");
+          o.solve.max_boxes = std::size_t(b);
+        } else if (a == "--svg") o.solve.svg = v;
+        else o.solve.near = v;
+      } catch (const RI::Input_error& e) {
+        std::cerr << "rigid_incidence: " << e.what() << "\n";
+        return 1;
+      }
+    }
     else if (a == "--help" || a == "-h") { std::cout << usage_text; return 0; }
     else if (a == "--dot" || a == "--kernel" || a == "--dot-seam" || a == "--chart" || a == "--form" || a == "--coefficients") {
       if (i + 1 >= args.size()) { std::cerr << "rigid_incidence: " << a << " needs a value\n"; return 1; }

@@ -19,9 +19,12 @@
 #include <CGAL/Rigid_incidence/optimal_incidence_tree.h>
 #include <CGAL/Rigid_incidence/rigidity_matroid.h>
 #include <CGAL/Rigid_incidence/Polynomial_system.h>
+#include <CGAL/Rigid_incidence/Solver_result.h>
+#include <CGAL/Rigid_incidence/Subdivision_solver.h>
 #include <CGAL/Rigid_incidence/incidence_tree_parametrization.h>
 #include <CGAL/Rigid_incidence/Reduced_system.h>
 #include <CGAL/Rigid_incidence/Configuration.h>
+#include <CGAL/Rigid_incidence/solve_scene.h>
 #include <CGAL/Rigid_incidence/naive_systems.h>
 #include <CGAL/Rigid_incidence/IO/read_scene.h>
 #include <CGAL/Rigid_incidence/IO/write_dot.h>

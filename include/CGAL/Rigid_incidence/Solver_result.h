@@ -37,6 +37,13 @@ struct Subdivision_solver_parameters
   /// split further: it becomes an `UNKNOWN` box. 0: the default, 1e-9 times the widest
   /// variable of the initial box.
   double minimal_width = 0;
+  /// A box at most this wide in every variable on which the Jacobian may be singular (the
+  /// Krawczyk operator does not contract) becomes an `UNKNOWN` box with reason "possible
+  /// multiple root" without further splitting (a multiple root, or a point of a solution
+  /// curve). 0: the default, 1e-6 times the widest variable of the initial box; negative:
+  /// split such boxes down to `minimal_width` too. The retry at a higher precision splits down
+  /// to the minimal width, so two simple roots closer than this are still separated there.
+  double singular_width = 0;
   /// Bits of the MPFR mantissa when the interval type is `CGAL::Gmpfi` (ignored for
   /// `CGAL::Interval_nt`).
   unsigned precision = 53;

@@ -150,6 +150,8 @@ private:
     std::vector<Bound> dlo, dhi;          // the search box
     std::vector<double> initial_width;    // per variable
     double min_width;
+    double singular_width;
+    double last_contraction = 0;          // ||I - Y J(X)|| of the last Krawczyk test
     bool exact_coefficients;
     Shape full;                           // all variables, the highest degree of each
     bool precondition;
@@ -184,6 +186,8 @@ private:
         widest = (std::max)(widest, initial_width.back());
       }
       min_width = P.minimal_width > 0 ? P.minimal_width : 1e-9 * widest;
+      singular_width = P.singular_width > 0 ? P.singular_width : P.singular_width < 0 ? 0 : 1e-6 * widest;
+      singular_width = (std::max)(singular_width, min_width);
       if constexpr (std::is_same<NT, CGAL::Gmpq>::value || std::is_same<NT, double>::value) {
 #ifdef CGAL_USE_MPFI
         const unsigned bits = (std::max)(2 * O::bits(), 106u);
@@ -201,6 +205,7 @@ private:
             Subdivision_solver_parameters q = P;
             q.precision = bits;
             q.minimal_width = min_width / 4;
+            q.singular_width = -1;  // down to the minimal width: separate close roots
             q.maximal_boxes = P.maximal_boxes / 8 + 1;
             Solver_result<CGAL::Gmpfi> r = Subdivision_solver<CGAL::Gmpfi>(q).solve(sub);
             for (const auto& x : r.roots) {
@@ -377,7 +382,16 @@ private:
         if (w > min_width) small = false;
       }
       if (converging || rel <= 1.0 / 16 || small) {
+        last_contraction = 0;
         if (P.fast ? polish(x) : certify(x)) return;
+        // a box this small on which the Jacobian may be singular (the Krawczyk operator does
+        // not contract): a multiple root, or a point of a solution curve; deeper subdivision
+        // would only multiply the boxes
+        if (!P.fast && last_contraction >= 1) {
+          bool below = true;
+          for (std::size_t j = 0; j < n && below; ++j) below = width(x, j) <= singular_width;
+          if (below) { make_unknown(x, small, true); return; }
+        }
       }
       // the variable to split
       std::size_t best = n;
@@ -528,6 +542,7 @@ private:
           Jm(i, j) = 0.5 * O::lower_double(J[i][j]) + 0.5 * O::upper_double(J[i][j]);
         }
       }
+      last_contraction = std::numeric_limits<double>::infinity();
       Eigen::FullPivLU<Matrix> lu(Jm);
       if (!lu.isInvertible()) return false;
       Matrix Y = lu.inverse();
@@ -547,14 +562,18 @@ private:
       K.assign(n, IT(0));
       inside = true;
       empty = false;
+      last_contraction = 0;
       for (std::size_t r = 0; r < n; ++r) {
         IT k = mi[r];
         for (std::size_t i = 0; i < n; ++i) if (Y(r, i) != 0) k = k - IT(Y(r, i)) * fm[i];
+        double row = 0;
         for (std::size_t c = 0; c < n; ++c) {
           IT a = IT(r == c ? 1 : 0);
           for (std::size_t i = 0; i < n; ++i) if (Y(r, i) != 0) a = a - IT(Y(r, i)) * J[i][c];
           k = k + a * dx[c];
+          row += (std::max)(std::abs(O::lower_double(a)), std::abs(O::upper_double(a)));
         }
+        last_contraction = (std::max)(last_contraction, row);
         K[r] = k;
         if (!(O::lower(k) > lo[r]) || !(O::upper(k) < hi[r])) inside = false;
         if (O::upper(k) < lo[r] || hi[r] < O::lower(k)) empty = true;
@@ -763,17 +782,17 @@ private:
       return true;
     }
 
-    void make_unknown(Node& x, bool small)
+    void make_unknown(Node& x, bool small, bool singular = false)
     {
       // before giving up, one more certification attempt on the box itself
-      if (!P.fast && certify(x)) return;
+      if (!singular && !P.fast && certify(x)) return;
       std::vector<double> c = center_d(x.lo, x.hi);
       Vector f;
       Matrix J;
       evaluate_d(c, f, J);
       Eigen::JacobiSVD<Matrix> svd(J);
       const auto& s = svd.singularValues();
-      bool deficient = !(s.size() > 0 && s[0] > 0 && s[s.size() - 1] > 1e-7 * s[0]);
+      bool deficient = singular || !(s.size() > 0 && s[0] > 0 && s[s.size() - 1] > 1e-7 * s[0]);
       std::string reason;
       if (deficient) reason = "possible multiple root";
       else if (!small) reason = "precision exhausted";
@@ -821,7 +840,7 @@ private:
         if (u.kind != Box_class::UNKNOWN || !u.rank_deficient || u.boxes < 16) continue;
         double span = 0;
         for (const auto& v : u.box) span = (std::max)(span, O::upper_double(v) - O::lower_double(v));
-        if (span < 64 * min_width) continue;
+        if (span < 100 * singular_width) continue;
         result.diagnosis = "positive_dimensional: solution set appears to be positive-dimensional: Jacobian rank-deficient along a chain of " +
                            std::to_string(u.boxes) + " boxes spanning " + std::to_string(span);
         break;

@@ -1,0 +1,340 @@
+// Copyright (c) 2026 Rigid_incidence contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// `rigid_incidence solve`: every real configuration of a scene, certified, as text, JSON and
+// an SVG gallery.
+
+#ifndef RIGID_INCIDENCE_EXAMPLES_SOLVE_COMMAND_H
+#define RIGID_INCIDENCE_EXAMPLES_SOLVE_COMMAND_H
+
+#include <CGAL/Rigid_incidence.h>
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace solve_command {
+
+namespace RI = CGAL::Rigid_incidence;
+
+struct Solve_options
+{
+  double tolerance = 1e-12;
+  unsigned precision = 53;
+  bool fast = false;
+  std::size_t max_boxes = 0;   // 0: the solver's default
+  std::string svg, near;
+};
+
+// Parses a positive number option; an Input_error names the option.
+inline double parse_positive(const std::string& opt, const std::string& v)
+{
+  char* end = nullptr;
+  double x = std::strtod(v.c_str(), &end);
+  if (v.empty() || *end != '\0' || !std::isfinite(x) || !(x > 0))
+    throw RI::Input_error(opt + ": '" + v + "' is not a positive number");
+  return x;
+}
+
+// The pose of every body of the scene file (each has coordinates): the best rigid fit of its
+// points onto the configuration's.
+inline std::vector<std::pair<std::string, RI::Rigid_fit>> user_poses(const RI::Scene& scene, const RI::Configuration& conf)
+{
+  std::map<std::string, std::size_t> index;
+  for (std::size_t i = 0; i < conf.labels.size(); ++i) index[conf.labels[i]] = i;
+  std::vector<std::pair<std::string, RI::Rigid_fit>> out;
+  for (const auto& b : scene.bodies) {
+    std::vector<std::array<double, 3>> y, x;
+    for (const auto& p : b.points) {
+      auto it = index.find(p.label);
+      if (it == index.end() || !conf.placed[it->second]) continue;
+      y.push_back({CGAL::to_double(p.x), CGAL::to_double(p.y), CGAL::to_double(p.z)});
+      x.push_back(conf.points[it->second]);
+    }
+    RI::Rigid_fit f;
+    if (y.size() >= 3) f = RI::fit_rigid_motion(y, x);
+    else if (y.size() >= 1) {  // a bar or a single point: a translation (its rotation is not defined)
+      f.ok = false;
+      f.motion.t = {x[0][0] - y[0][0], x[0][1] - y[0][1], x[0][2] - y[0][2]};
+    }
+    out.push_back({b.name, f});
+  }
+  return out;
+}
+
+inline nlohmann::ordered_json points_json(const RI::Configuration& conf)
+{
+  nlohmann::ordered_json j = nlohmann::ordered_json::object();
+  for (std::size_t i = 0; i < conf.labels.size(); ++i)
+    if (conf.placed[i]) j[conf.labels[i]] = {conf.points[i][0], conf.points[i][1], conf.points[i][2]};
+  return j;
+}
+
+// The configuration to order the solutions by (--near): {"points": {label: [x, y, z]}}, or a
+// `solve --json` output (its first solution).
+inline std::map<std::string, std::array<double, 3>> read_near(const std::string& file)
+{
+  std::ifstream in(file);
+  if (!in) throw RI::Input_error(file + ": cannot open the configuration given to --near");
+  nlohmann::json j;
+  try {
+    in >> j;
+  } catch (const std::exception& e) {
+    throw RI::Input_error(file + ": not JSON (" + e.what() + ")");
+  }
+  if (j.is_object() && j.contains("solutions") && j["solutions"].is_array() && !j["solutions"].empty()) j = j["solutions"][0];
+  if (!j.is_object() || !j.contains("points") || !j["points"].is_object())
+    throw RI::Input_error(file + ": expected {\"points\": {label: [x, y, z], ...}} (or the output of solve --json)");
+  std::map<std::string, std::array<double, 3>> out;
+  for (auto it = j["points"].begin(); it != j["points"].end(); ++it) {
+    const auto& v = it.value();
+    if (!v.is_array() || v.size() != 3 || !v[0].is_number() || !v[1].is_number() || !v[2].is_number())
+      throw RI::Input_error(file + ": point '" + it.key() + "' is not [x, y, z]");
+    out[it.key()] = {v[0].get<double>(), v[1].get<double>(), v[2].get<double>()};
+  }
+  if (out.empty()) throw RI::Input_error(file + ": no point given");
+  return out;
+}
+
+inline double near_distance(const RI::Configuration& c, const std::map<std::string, std::array<double, 3>>& ref, std::size_t& common)
+{
+  double s = 0;
+  common = 0;
+  for (std::size_t i = 0; i < c.labels.size(); ++i) {
+    if (!c.placed[i]) continue;
+    auto it = ref.find(c.labels[i]);
+    if (it == ref.end()) continue;
+    for (int k = 0; k < 3; ++k) s += (c.points[i][k] - it->second[k]) * (c.points[i][k] - it->second[k]);
+    ++common;
+  }
+  return common ? std::sqrt(s / double(common)) : std::numeric_limits<double>::infinity();
+}
+
+// The gallery: each configuration as a projected line drawing (bodies as edges between their
+// points, shared points marked), side by side, one view direction for all.
+inline void write_svg(const std::string& file, const RI::Scene& scene, const RI::Scene_solve_result& r, const std::string& title)
+{
+  std::ofstream out(file);
+  if (!out) throw RI::Input_error("--svg: cannot write '" + file + "'");
+  const double az = 0.6, el = 0.45;  // view: azimuth and elevation in radians
+  auto project = [&](const std::array<double, 3>& p) {
+    double x = std::cos(az) * p[0] - std::sin(az) * p[1];
+    double y0 = std::sin(az) * p[0] + std::cos(az) * p[1];
+    double y = std::cos(el) * p[2] - std::sin(el) * y0;
+    return std::array<double, 2>{x, -y};
+  };
+  std::map<std::string, int> uses;
+  for (const auto& b : scene.bodies) for (const auto& p : b.points) ++uses[p.label];
+  const std::size_t n = r.configurations.size(), cols = n == 0 ? 1 : std::min<std::size_t>(n, 4), rows = n == 0 ? 1 : (n + cols - 1) / cols;
+  const double cell = 260, pad = 20;
+  out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << cols * cell << "\" height=\"" << rows * cell + 30
+      << "\" font-family=\"sans-serif\" font-size=\"10\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
+      << "<text x=\"8\" y=\"18\" font-size=\"13\">" << title << "</text>\n";
+  if (n == 0) out << "<text x=\"8\" y=\"60\">no configuration" << (r.complete() ? "" : " certified (see the unresolved regions)") << "</text>\n";
+  const char* colours[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#e377c2", "#17becf"};
+  for (std::size_t k = 0; k < n; ++k) {
+    const auto& conf = r.configurations[k].configuration;
+    std::map<std::string, std::array<double, 2>> q;
+    double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
+    for (std::size_t i = 0; i < conf.labels.size(); ++i) {
+      if (!conf.placed[i]) continue;
+      auto p = project(conf.points[i]);
+      q[conf.labels[i]] = p;
+      for (int a = 0; a < 2; ++a) { lo[a] = std::min(lo[a], p[a]); hi[a] = std::max(hi[a], p[a]); }
+    }
+    const double ox = (k % cols) * cell, oy = 30 + (k / cols) * cell;
+    const double s = (cell - 2 * pad) / std::max(1e-300, std::max(hi[0] - lo[0], hi[1] - lo[1]));
+    auto X = [&](const std::array<double, 2>& p) { return ox + pad + (p[0] - lo[0]) * s; };
+    auto Y = [&](const std::array<double, 2>& p) { return oy + pad + (p[1] - lo[1]) * s; };
+    out << "<g>\n<rect x=\"" << ox + 2 << "\" y=\"" << oy + 2 << "\" width=\"" << cell - 4 << "\" height=\"" << cell - 4
+        << "\" fill=\"none\" stroke=\"#ccc\"/>\n<text x=\"" << ox + 8 << "\" y=\"" << oy + 14 << "\">#" << k + 1
+        << (r.configurations[k].certified ? " certified" : " not certified") << ", residual " << std::setprecision(2)
+        << r.configurations[k].max_residual << "</text>\n";
+    std::size_t bi = 0;
+    for (const auto& b : scene.bodies) {
+      const char* col = colours[bi++ % 8];
+      for (std::size_t i = 0; i < b.points.size(); ++i)
+        for (std::size_t j = i + 1; j < b.points.size(); ++j) {
+          auto a = q.find(b.points[i].label), c = q.find(b.points[j].label);
+          if (a == q.end() || c == q.end()) continue;
+          out << "<line x1=\"" << X(a->second) << "\" y1=\"" << Y(a->second) << "\" x2=\"" << X(c->second) << "\" y2=\"" << Y(c->second)
+              << "\" stroke=\"" << col << "\" stroke-width=\"1.3\"/>\n";
+        }
+    }
+    for (const auto& d : scene.distances) {
+      auto a = q.find(d.a), c = q.find(d.b);
+      if (a == q.end() || c == q.end()) continue;
+      out << "<line x1=\"" << X(a->second) << "\" y1=\"" << Y(a->second) << "\" x2=\"" << X(c->second) << "\" y2=\"" << Y(c->second)
+          << "\" stroke=\"#555\" stroke-dasharray=\"4 3\"/>\n";
+    }
+    for (const auto& p : q) {
+      bool shared = uses[p.first] > 1;
+      out << "<circle cx=\"" << X(p.second) << "\" cy=\"" << Y(p.second) << "\" r=\"" << (shared ? 3.5 : 2) << "\" fill=\""
+          << (shared ? "black" : "white") << "\" stroke=\"black\"/>\n";
+      if (shared) out << "<text x=\"" << X(p.second) + 4 << "\" y=\"" << Y(p.second) - 4 << "\">" << p.first << "</text>\n";
+    }
+    out << "</g>\n";
+  }
+  out << "</svg>\n";
+}
+
+template <class IT, class NT, class Traits>
+RI::Scene_solve_result run(const RI::Rigid_body_collection<Traits>& input, const RI::Rigid_body_collection<Traits>& c,
+                           const RI::Incidence_tree& t, const RI::Well_formed_selection& s, const Solve_options& o)
+{
+  RI::Scene_solve_parameters p;
+  p.solver.tolerance = o.tolerance;
+  p.solver.precision = o.precision;
+  p.solver.fast = o.fast;
+  if (o.max_boxes) p.solver.maximal_boxes = o.max_boxes;
+  else p.solver.maximal_boxes = 50000;
+  return RI::solve_scene<IT, NT>(input, c, t, s, p);
+}
+
+template <class Traits>
+int solve(const RI::Scene& scene, const RI::Rigid_body_collection<Traits>& input, const RI::Rigid_body_collection<Traits>& c,
+          const RI::Incidence_tree& t, const RI::Well_formed_selection& s, const RI::Dof_count& dof, const Solve_options& o, bool json,
+          const std::string& scene_file, double analysis_seconds)
+{
+  // exact coefficients when every covering body has coordinates, else certified intervals
+  bool exact = true;
+  for (std::size_t b : t.covering_set) if (!c.body(b).all_coordinates()) exact = false;
+  RI::Scene_solve_result r;
+  if (o.precision <= 53) {
+    if (exact) r = run<CGAL::Interval_nt<false>, CGAL::Gmpq>(input, c, t, s, o);
+    else r = run<CGAL::Interval_nt<false>, CGAL::Interval_nt<false>>(input, c, t, s, o);
+  } else {
+#ifdef CGAL_USE_MPFI
+    if (exact) r = run<CGAL::Gmpfi, CGAL::Gmpq>(input, c, t, s, o);
+    else {
+      CGAL::Gmpfi::Precision_type old = CGAL::Gmpfi::set_default_precision(o.precision);
+      r = run<CGAL::Gmpfi, CGAL::Gmpfi>(input, c, t, s, o);
+      CGAL::Gmpfi::set_default_precision(old);
+    }
+#else
+    throw RI::Input_error("--precision above 53 bits needs MPFI (Debian libmpfi-dev); this build has none");
+#endif
+  }
+  if (!o.near.empty()) {
+    auto ref = read_near(o.near);
+    std::stable_sort(r.configurations.begin(), r.configurations.end(), [&](const RI::Scene_configuration& a, const RI::Scene_configuration& b) {
+      std::size_t ca, cb;
+      return near_distance(a.configuration, ref, ca) < near_distance(b.configuration, ref, cb);
+    });
+  }
+  if (!o.svg.empty())
+    write_svg(o.svg, scene, r, (scene.name.empty() ? scene_file : scene.name) + ": " + std::to_string(r.configurations.size()) +
+                                  " configuration(s)" + (r.complete() ? ", complete" : ", NOT complete"));
+  const auto& st = r.statistics;
+  if (json) {
+    nlohmann::ordered_json j;
+    j["scene"] = scene_file;
+    j["analysis"] = {{"bodies", scene.bodies.size()}, {"standard_bodies", c.number_of_bodies()}, {"dof", dof.dof},
+                     {"verdict", dof.verdict()}, {"covering_set", t.covering_set.size()}, {"tree_weight", t.weight}};
+    nlohmann::ordered_json vars = nlohmann::ordered_json::array();
+    for (const auto& v : r.variables) vars.push_back(v);
+    j["reduced_system"] = {{"variables", vars}, {"equations", r.equations}};
+    j["complete"] = r.complete();
+    j["certified"] = !r.fast;
+    j["diagnosis"] = r.diagnosis.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(r.diagnosis);
+    nlohmann::ordered_json sols = nlohmann::ordered_json::array();
+    for (const auto& x : r.configurations) {
+      nlohmann::ordered_json sj;
+      sj["certified"] = x.certified;
+      nlohmann::ordered_json params = nlohmann::ordered_json::object();
+      for (std::size_t i = 0; i < x.variables.size(); ++i) params[x.variables[i]] = {x.parameters[i].first, x.parameters[i].second};
+      sj["parameters"] = params;
+      sj["charts"] = x.charts;
+      sj["found_in_charts"] = x.found;
+      nlohmann::ordered_json bodies = nlohmann::ordered_json::object();
+      for (const auto& b : user_poses(scene, x.configuration)) {
+        const auto& m = b.second.motion;
+        nlohmann::ordered_json bj;
+        if (b.second.ok) bj["rotation"] = {{m.R[0], m.R[1], m.R[2]}, {m.R[3], m.R[4], m.R[5]}, {m.R[6], m.R[7], m.R[8]}};
+        else bj["rotation"] = nullptr;
+        bj["translation"] = {m.t[0], m.t[1], m.t[2]};
+        bodies[b.first] = bj;
+      }
+      sj["bodies"] = bodies;
+      sj["points"] = points_json(x.configuration);
+      sj["max_residual"] = x.max_residual;
+      sols.push_back(sj);
+    }
+    j["solutions"] = sols;
+    nlohmann::ordered_json un = nlohmann::ordered_json::array();
+    for (const auto& u : r.unresolved) {
+      nlohmann::ordered_json uj;
+      uj["class"] = u.kind == RI::Box_class::PENDING ? "pending" : "unknown";
+      uj["reason"] = u.reason;
+      nlohmann::ordered_json box = nlohmann::ordered_json::array();
+      for (const auto& b : u.box) box.push_back({b.first, b.second});
+      uj["box"] = box;
+      uj["boxes"] = u.boxes;
+      uj["charts"] = u.charts;
+      uj["points"] = points_json(u.at_centre);
+      un.push_back(uj);
+    }
+    j["unresolved"] = un;
+    j["stats"] = {{"chart_combinations", st.chart_combinations}, {"excluded_at_once", st.excluded_at_once},
+                  {"boxes", st.boxes}, {"krawczyk_tests", st.krawczyk_tests}, {"roots", st.roots},
+                  {"duplicates_merged", st.duplicates}, {"spurious_rejected", st.spurious},
+                  {"seconds", {{"analysis", analysis_seconds}, {"reduce", st.reduce_seconds}, {"solve", st.solve_seconds},
+                               {"verify", st.verify_seconds}}}};
+    std::cout << j.dump(2) << "\n";
+    return 0;
+  }
+  std::cout << std::setprecision(10);
+  std::cout << "scene " << scene_file << ": reduced system of " << r.variables.size() << " variables, " << r.equations << " equations; "
+            << st.chart_combinations << " chart combination(s) solved" << (r.fast ? " in the FAST, NON-CERTIFIED mode" : "") << "\n";
+  if (!r.diagnosis.empty()) std::cout << "diagnosis: " << r.diagnosis << "\n";
+  std::cout << r.configurations.size() << " configuration(s)";
+  if (r.complete()) std::cout << ", all certified: complete\n";
+  else std::cout << "; the result is NOT complete" << (r.unresolved.empty() ? "" : " (unresolved regions below)") << "\n";
+  std::size_t k = 0;
+  for (const auto& x : r.configurations) {
+    std::cout << "\nconfiguration " << ++k << ": " << (x.certified ? "certified" : "NOT certified") << ", max residual "
+              << std::setprecision(3) << x.max_residual << std::setprecision(10) << " in the original system\n  parameters:";
+    for (std::size_t i = 0; i < x.variables.size(); ++i)
+      std::cout << " " << x.variables[i] << " in [" << x.parameters[i].first << ", " << x.parameters[i].second << "]";
+    std::cout << "\n  bodies (rotation row-major; translation):\n";
+    for (const auto& b : user_poses(scene, x.configuration)) {
+      const auto& m = b.second.motion;
+      std::cout << "    " << b.first << ":";
+      if (b.second.ok) std::cout << " R = [" << m.R[0] << " " << m.R[1] << " " << m.R[2] << "; " << m.R[3] << " " << m.R[4] << " " << m.R[5]
+                                 << "; " << m.R[6] << " " << m.R[7] << " " << m.R[8] << "]";
+      std::cout << " t = (" << m.t[0] << ", " << m.t[1] << ", " << m.t[2] << ")\n";
+    }
+    std::cout << "  points (frame " << x.configuration.frame << "):\n";
+    for (std::size_t i = 0; i < x.configuration.labels.size(); ++i)
+      if (x.configuration.placed[i])
+        std::cout << "    " << x.configuration.labels[i] << " = (" << x.configuration.points[i][0] << ", " << x.configuration.points[i][1] << ", "
+                  << x.configuration.points[i][2] << ")\n";
+  }
+  if (!r.unresolved.empty()) {
+    std::cout << "\nunresolved regions:\n";
+    for (const auto& u : r.unresolved) {
+      std::cout << "  " << (u.kind == RI::Box_class::PENDING ? "pending" : "unknown") << " (" << u.reason << "), " << u.boxes
+                << " box(es), charts";
+      for (int ch : u.charts) std::cout << " " << ch;
+      std::cout << ", box";
+      for (const auto& b : u.box) std::cout << " [" << b.first << ", " << b.second << "]";
+      std::cout << "\n";
+    }
+  }
+  std::cout << "\nstatistics: " << st.boxes << " boxes, " << st.krawczyk_tests << " Krawczyk tests, " << st.roots << " roots ("
+            << st.duplicates << " found twice, " << st.spurious << " rejected by the original system), " << st.excluded_at_once << " of "
+            << st.chart_combinations << " chart combinations excluded at once; seconds: analysis " << analysis_seconds << ", reduce "
+            << st.reduce_seconds << ", solve " << st.solve_seconds << ", verify " << st.verify_seconds << "\n";
+  return 0;
+}
+
+} // namespace solve_command
+
+#endif

@@ -1,0 +1,292 @@
+// Copyright (c) 2026 Rigid_incidence contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// The whole pipeline after the analysis: the reduced system in every chart combination (and
+// every placement of a body known only by distances), the subdivision solver on each,
+// back-substitution, verification in the original system, and one list of configurations in
+// which roots found twice (on chart borders) are merged by comparing configurations.
+
+#ifndef CGAL_RIGID_INCIDENCE_SOLVE_SCENE_H
+#define CGAL_RIGID_INCIDENCE_SOLVE_SCENE_H
+
+#include <CGAL/Rigid_incidence/Configuration.h>
+#include <CGAL/Rigid_incidence/Reduced_system.h>
+#include <CGAL/Rigid_incidence/Subdivision_solver.h>
+#include <CGAL/Rigid_incidence/enclose_coordinates.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Rigid_incidence {
+
+/// \ingroup PkgRigidIncidenceSolver
+/// Parameters of `solve_scene()`.
+struct Scene_solve_parameters
+{
+  /// parameters of the solver, for each chart combination
+  Subdivision_solver_parameters solver;
+  /// two roots are one configuration if no point moves more than this, relative to the size
+  /// of the scene (the bounding box diagonal of the configuration, at least 1)
+  double merge_tolerance = 1e-9;
+  /// a root whose configuration has a residual above this in the original system (relative
+  /// to the size of the scene) is not a configuration of the scene (a body outside the
+  /// covering set that only fits mirrored); it is counted in `Scene_solve_statistics::spurious`
+  double residual_threshold = 1e-6;
+};
+
+/// \ingroup PkgRigidIncidenceSolver
+/// One configuration of a scene.
+struct Scene_configuration
+{
+  bool certified = false;                             ///< the root is certified (Krawczyk)
+  bool on_chart_border = false;                       ///< the root lies on the border of its chart's box
+  std::vector<int> charts;                            ///< chart combination it was found in (first)
+  std::vector<int> placements;                        ///< placement variant per body
+  std::vector<std::string> variables;                 ///< names of the parameters
+  std::vector<std::pair<double, double>> parameters;  ///< per parameter: its certified enclosure
+  Configuration configuration;                        ///< every body's pose, every point
+  Residual_report residuals;                          ///< in the original system
+  double max_residual = 0;                            ///< `residuals.max()`
+  std::size_t found = 1;                              ///< chart combinations it was found in
+};
+
+/// \ingroup PkgRigidIncidenceSolver
+/// A region of one chart combination the solver could not decide.
+struct Scene_unresolved
+{
+  Box_class kind = Box_class::UNKNOWN;                ///< `UNKNOWN` or `PENDING`
+  std::string reason;                                 ///< why
+  std::vector<int> charts;                            ///< chart combination
+  std::vector<int> placements;                        ///< placement variant per body
+  std::vector<std::pair<double, double>> box;         ///< per parameter
+  std::size_t boxes = 1;                              ///< boxes merged into it
+  Configuration at_centre;                            ///< the configuration at the box centre
+};
+
+/// \ingroup PkgRigidIncidenceSolver
+/// Statistics of `solve_scene()`.
+struct Scene_solve_statistics
+{
+  std::size_t chart_combinations = 0;      ///< systems solved (chart combinations x placements)
+  std::size_t excluded_at_once = 0;        ///< of those, excluded on their first box
+  double excluded_at_once_seconds = 0;     ///< solver time spent on those
+  std::size_t boxes = 0;                   ///< boxes visited, all systems
+  std::size_t krawczyk_tests = 0;          ///< all systems
+  std::size_t roots = 0;                   ///< roots before merging
+  std::size_t duplicates = 0;              ///< roots merged into a configuration found before
+  std::size_t spurious = 0;                ///< roots rejected by the original system
+  double reduce_seconds = 0;               ///< building the reduced systems
+  double solve_seconds = 0;                ///< the subdivision solver
+  double verify_seconds = 0;               ///< back-substitution and residuals
+};
+
+/// \ingroup PkgRigidIncidenceSolver
+/// What `solve_scene()` found.
+struct Scene_solve_result
+{
+  std::vector<Scene_configuration> configurations; ///< in a stable order (by point coordinates)
+  std::vector<Scene_unresolved> unresolved;        ///< unknown and pending regions
+  /// empty, or what was found: "positive_dimensional: ...", "under_constrained: ...",
+  /// "over_constrained: ..."
+  std::string diagnosis;
+  bool fast = false;                               ///< solved in the fast, non-certified mode
+  std::vector<std::string> variables;              ///< the reduced system's parameters
+  std::size_t equations = 0;                       ///< the reduced system's equations
+  Scene_solve_statistics statistics;
+  /// every configuration certified and nothing unresolved
+  bool complete() const
+  {
+    if (fast || !unresolved.empty() || !diagnosis.empty()) return false;
+    for (const auto& c : configurations) if (!c.certified) return false;
+    return true;
+  }
+};
+
+namespace internal {
+
+// The number of placements of every covering body known only by distances (1 for the others).
+template <class Traits>
+std::vector<int> placement_counts(const Rigid_body_collection<Traits>& c, const Incidence_tree& tree)
+{
+  std::vector<int> n(c.number_of_bodies(), 1);
+  CGAL::Protect_FPU_rounding<true> guard;
+  for (std::size_t b : tree.covering_set) {
+    if (c.body(b).all_coordinates()) continue;
+    n[b] = (std::max)(1, int(enclose_all_placements<CGAL::Interval_nt<false>>(c, b).size()));
+  }
+  return n;
+}
+
+// Advances a mixed-radix counter; false when it wraps around.
+inline bool next_combination(std::vector<int>& v, const std::vector<int>& radix)
+{
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    if (++v[i] < radix[i]) return true;
+    v[i] = 0;
+  }
+  return false;
+}
+
+inline double configuration_distance(const Configuration& a, const Configuration& b)
+{
+  double d = 0;
+  for (std::size_t i = 0; i < a.points.size() && i < b.points.size(); ++i) {
+    if (a.placed[i] != b.placed[i]) return std::numeric_limits<double>::infinity();
+    if (!a.placed[i]) continue;
+    for (int k = 0; k < 3; ++k) d = (std::max)(d, std::abs(a.points[i][k] - b.points[i][k]));
+  }
+  return d;
+}
+
+inline double configuration_size(const Configuration& a)
+{
+  double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
+  bool first = true;
+  for (std::size_t i = 0; i < a.points.size(); ++i) {
+    if (!a.placed[i]) continue;
+    for (int k = 0; k < 3; ++k) {
+      if (first || a.points[i][k] < lo[k]) lo[k] = a.points[i][k];
+      if (first || a.points[i][k] > hi[k]) hi[k] = a.points[i][k];
+    }
+    first = false;
+  }
+  double s = 0;
+  for (int k = 0; k < 3; ++k) s += (hi[k] - lo[k]) * (hi[k] - lo[k]);
+  return (std::max)(1.0, std::sqrt(s));
+}
+
+} // namespace internal
+
+/*!
+\ingroup PkgRigidIncidenceSolver
+\brief Every real configuration of a scene: the reduced system solved in every chart
+combination by `Subdivision_solver<IT>`, each root turned into a configuration, verified in
+the original system, and roots found in two charts merged.
+
+\tparam IT the solver's interval type (`CGAL::Interval_nt<false>` or `CGAL::Gmpfi`)
+\tparam NT the coefficient type of the reduced system: `CGAL::Gmpq` when every covering body
+has coordinates (then a root the double precision cannot certify is retried with more bits),
+else `CGAL::Interval_nt<false>` or `CGAL::Gmpfi`
+\param original the collection as the scene file gives it (for the residuals)
+\param c its standard collection, `tree` and `selection` as `analyze` finds them
+*/
+template <class IT, class NT, class Traits>
+Scene_solve_result solve_scene(const Rigid_body_collection<Traits>& original, const Rigid_body_collection<Traits>& c,
+                               const Incidence_tree& tree, const Well_formed_selection& selection,
+                               const Scene_solve_parameters& parameters = Scene_solve_parameters())
+{
+  typedef std::chrono::steady_clock Clock;
+  auto since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
+  Scene_solve_result out;
+  out.fast = parameters.solver.fast;
+  Scene_solve_statistics& st = out.statistics;
+
+  auto t0 = Clock::now();
+  std::vector<int> radix_p = internal::placement_counts(c, tree);
+  std::vector<int> placements(c.number_of_bodies(), 0);
+  Reduced_system<Traits, NT> first(c, tree, selection);
+  st.reduce_seconds += since(t0);
+  out.variables = first.parametrization().variable_names();
+  out.equations = first.number_of_equations();
+  if (!first.is_square()) {
+    const std::string d = first.diagnostic();
+    out.diagnosis = (first.number_of_equations() < first.number_of_variables() || !first.loose_bodies().empty()
+                         ? "under_constrained: "
+                         : "over_constrained: ") + d;
+    return out;
+  }
+  std::vector<int> radix_c;
+  for (const auto& e : first.parametrization().edges()) radix_c.push_back(e.number_of_charts);
+
+  struct Candidate { Scene_configuration s; double size; };
+  std::vector<Candidate> found;
+  std::string positive;
+  do {
+    std::vector<int> charts(radix_c.size(), 0);
+    do {
+      auto t1 = Clock::now();
+      Reduced_system<Traits, NT> r(c, tree, selection, charts, Rotation_form::QUATERNION_CHARTS, placements);
+      Polynomial_system<NT> sys = r.system();
+      st.reduce_seconds += since(t1);
+      auto t2 = Clock::now();
+      Solver_result<IT> res = Subdivision_solver<IT>(parameters.solver).solve(sys);
+      double ts = since(t2);
+      st.solve_seconds += ts;
+      ++st.chart_combinations;
+      st.boxes += res.statistics.boxes;
+      st.krawczyk_tests += res.statistics.krawczyk_tests;
+      if (res.statistics.boxes == 1 && res.roots.empty() && res.unresolved.empty()) {
+        ++st.excluded_at_once;
+        st.excluded_at_once_seconds += ts;
+      }
+      if (positive.empty() && !res.diagnosis.empty()) positive = res.diagnosis;
+      auto t3 = Clock::now();
+      for (const auto& root : res.roots) {
+        ++st.roots;
+        Scene_configuration s;
+        s.certified = root.certified;
+        s.on_chart_border = root.on_boundary;
+        s.charts = charts;
+        s.placements = placements;
+        s.variables = sys.variable_names;
+        for (const auto& e : root.enclosure) s.parameters.push_back(CGAL::to_interval(e));
+        s.configuration = configuration(r, root.approximation);
+        s.residuals = residuals(original, s.configuration);
+        s.max_residual = s.residuals.max();
+        const double size = internal::configuration_size(s.configuration);
+        if (!(s.max_residual <= parameters.residual_threshold * size)) { ++st.spurious; continue; }
+        bool merged = false;
+        for (auto& f : found) {
+          if (internal::configuration_distance(f.s.configuration, s.configuration) <= parameters.merge_tolerance * (std::max)(size, f.size)) {
+            ++f.s.found;
+            ++st.duplicates;
+            if (!f.s.certified && s.certified) { std::size_t k = f.s.found; f.s = s; f.s.found = k; }
+            merged = true;
+            break;
+          }
+        }
+        if (!merged) found.push_back({s, size});
+      }
+      for (const auto& u : res.unresolved) {
+        Scene_unresolved x;
+        x.kind = u.kind;
+        x.reason = u.reason;
+        x.charts = charts;
+        x.placements = placements;
+        x.boxes = u.boxes;
+        std::vector<double> centre;
+        for (const auto& e : u.box) {
+          auto b = CGAL::to_interval(e);
+          x.box.push_back(b);
+          centre.push_back(0.5 * b.first + 0.5 * b.second);
+        }
+        x.at_centre = configuration(r, centre);
+        out.unresolved.push_back(std::move(x));
+      }
+      st.verify_seconds += since(t3);
+    } while (internal::next_combination(charts, radix_c));
+  } while (internal::next_combination(placements, radix_p));
+  if (!positive.empty()) out.diagnosis = positive;
+  for (auto& f : found) out.configurations.push_back(std::move(f.s));
+  // a stable order: by the coordinates of the points, in label order
+  std::sort(out.configurations.begin(), out.configurations.end(), [](const Scene_configuration& a, const Scene_configuration& b) {
+    const auto& p = a.configuration.points;
+    const auto& q = b.configuration.points;
+    for (std::size_t i = 0; i < p.size() && i < q.size(); ++i)
+      for (int k = 0; k < 3; ++k) {
+        double x = std::round(p[i][k] * 1e6), y = std::round(q[i][k] * 1e6);
+        if (x != y) return x < y;
+      }
+    return false;
+  });
+  return out;
+}
+
+} // namespace Rigid_incidence
+} // namespace CGAL
+
+#endif
