@@ -254,3 +254,66 @@ if(TARGET rigid_incidence)
            COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=analyze|${_ri_d}/tetra.json|--chart|0" -DEXPECT_RC=1
                    "-DEXPECT_STDERR=--chart is an option of reduce" -P ${_ri_cli_script})
 endif()
+
+# --- solve: every real configuration (issue 6). Each solution is checked by solve_json_check
+# against the scene file alone (rigid bodies, distances, shared labels, printed poses); the
+# expected counts are the papers' (tetra ii: 4, pent iv: 8) or an independent count (see
+# examples/Rigid_incidence/data/README.md).
+if(TARGET rigid_incidence)
+  add_executable(solve_json_check ${CMAKE_CURRENT_LIST_DIR}/../solve_json_check.cpp)
+  target_link_libraries(solve_json_check PRIVATE nlohmann_json::nlohmann_json)
+  set(_ri_d ${RIGID_INCIDENCE_DATA_DIR})
+  # scene  expectations
+  set(_ri_solve_table
+    tetra "--solutions|4|--certified|4|--complete|true"
+    tetra_ii "--solutions|4|--certified|4|--complete|true"
+    pent "--solutions|8|--certified|8|--complete|true"
+    tetra_i "--complete|false|--unresolved-reason|multiple"
+    quad "--complete|false|--diagnosis|positive_dimensional")
+  list(LENGTH _ri_solve_table _n)
+  math(EXPR _last "${_n} - 1")
+  foreach(_i RANGE 0 ${_last} 2)
+    math(EXPR _j "${_i} + 1")
+    list(GET _ri_solve_table ${_i} _s)
+    list(GET _ri_solve_table ${_j} _expect)
+    add_test(NAME cli_solve_${_s}
+             COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${_ri_d}/${_s}.json|--json" -DEXPECT_RC=0
+                     "-DSTDOUT_FILE=${CMAKE_CURRENT_BINARY_DIR}/cli_solve_${_s}.json"
+                     "-DCHECK_PROGRAM=$<TARGET_FILE:solve_json_check>" "-DCHECK_ARGS=STDOUT_FILE|${_ri_d}/${_s}.json|${_expect}"
+                     -P ${_ri_cli_script})
+  endforeach()
+  add_test(NAME cli_solve_text
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${_ri_d}/tetra.json" -DEXPECT_RC=0
+                   "-DEXPECT_STDOUT=4 configuration\\(s\\), all certified: complete&&configuration 4: certified&&statistics: "
+                   -P ${_ri_cli_script})
+  add_test(NAME cli_solve_fast
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${_ri_d}/pent.json|--fast|--json" -DEXPECT_RC=0
+                   "-DSTDOUT_FILE=${CMAKE_CURRENT_BINARY_DIR}/cli_solve_pent_fast.json"
+                   "-DCHECK_PROGRAM=$<TARGET_FILE:solve_json_check>" "-DCHECK_ARGS=STDOUT_FILE|${_ri_d}/pent.json|--solutions|8|--certified|0|--complete|false"
+                   -P ${_ri_cli_script})
+  add_test(NAME cli_solve_svg
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${_ri_d}/tetra.json|--svg|${CMAKE_CURRENT_BINARY_DIR}/cli_tetra.svg" -DEXPECT_RC=0
+                   "-DCHECK_FILE=${CMAKE_CURRENT_BINARY_DIR}/cli_tetra.svg"
+                   "-DCHECK_FILE_REGEX=^<svg&&4 configuration\\(s\\), complete&&#4 certified&&<line&&<circle&&</svg>" -P ${_ri_cli_script})
+  add_test(NAME cli_solve_near
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${_ri_d}/pent.json|--near|${CMAKE_CURRENT_LIST_DIR}/../data/pent_near.json" -DEXPECT_RC=0
+                   "-DEXPECT_STDOUT=configuration 1: certified[^\n]*\n  parameters: c1.t in [^\n]* c4.t in \\[-0.5257311121, [^\n]* c2.s in \\[0.5877852523" -P ${_ri_cli_script})
+  add_test(NAME cli_solve_bad_tolerance
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${_ri_d}/tetra.json|--tolerance|-1" -DEXPECT_RC=1
+                   "-DEXPECT_STDERR=--tolerance: '-1' is not a positive number" -P ${_ri_cli_script})
+  add_test(NAME cli_solve_bad_precision
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${_ri_d}/tetra.json|--precision|12.5" -DEXPECT_RC=1
+                   "-DEXPECT_STDERR=--precision: '12.5' is not a number of bits" -P ${_ri_cli_script})
+  add_test(NAME cli_solve_option_of_analyze
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=analyze|${_ri_d}/tetra.json|--fast" -DEXPECT_RC=1
+                   "-DEXPECT_STDERR=--fast is an option of solve" -P ${_ri_cli_script})
+  add_test(NAME cli_solve_missing_scene
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${CMAKE_CURRENT_BINARY_DIR}/no_such_scene.json" -DEXPECT_RC=2
+                   "-DEXPECT_STDERR=rigid_incidence: error: .*no_such_scene.json" -P ${_ri_cli_script})
+  add_test(NAME cli_solve_bad_near
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${_ri_d}/tetra.json|--near|${_ri_d}/tetra.json" -DEXPECT_RC=2
+                   "-DEXPECT_STDERR=expected \\{\"points\"" -P ${_ri_cli_script})
+  add_test(NAME cli_solve_under_constrained
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${_ri_d}/bar_end.json|--json" -DEXPECT_RC=0
+                   "-DEXPECT_STDOUT=\"complete\": false&&\"diagnosis\": \"under_constrained: " -P ${_ri_cli_script})
+endif()

@@ -1,0 +1,152 @@
+// Copyright (c) 2026 Rigid_incidence contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Checks the output of `rigid_incidence solve SCENE --json` (run by cmake/cli.cmake) against
+// the scene file itself, independently of the library: every solution must keep every body
+// of the file rigid (all pairwise distances of its points as the file gives them), keep every
+// distance of the file, and its points must come out the same where bodies share a label
+// (they are printed once per label); its printed body poses must map the file's coordinates
+// onto the printed points.
+//   solve_json_check OUTPUT SCENE [--solutions N] [--complete true|false] [--certified N]
+//                    [--diagnosis PREFIX] [--unresolved-reason SUBSTRING] [--no-solutions-count]
+//                    [--tolerance T]
+
+#include "test_check.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+typedef std::array<double, 3> P3;
+
+static double num(const nlohmann::json& v)
+{
+  if (v.is_number()) return v.get<double>();
+  // scene numbers are strings ("1/3", "0.25", "-2")
+  std::string s = v.get<std::string>();
+  auto slash = s.find('/');
+  if (slash != std::string::npos) return std::stod(s.substr(0, slash)) / std::stod(s.substr(slash + 1));
+  return std::stod(s);
+}
+
+static double dist(const P3& a, const P3& b)
+{
+  return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
+}
+
+int main(int argc, char** argv)
+{
+  if (argc < 3) { std::cerr << "usage: solve_json_check OUTPUT SCENE [--key value]...\n"; return 2; }
+  nlohmann::json j, scene;
+  {
+    std::ifstream in(argv[1]);
+    if (!in) { std::cerr << "cannot open " << argv[1] << "\n"; return 2; }
+    in >> j;
+    std::ifstream sin(argv[2]);
+    if (!sin) { std::cerr << "cannot open " << argv[2] << "\n"; return 2; }
+    sin >> scene;
+  }
+  std::map<std::string, std::string> expect;
+  for (int i = 3; i + 1 < argc; i += 2) expect[argv[i]] = argv[i + 1];
+  const double tol = expect.count("--tolerance") ? std::stod(expect["--tolerance"]) : 1e-8;
+
+  for (const char* k : {"scene", "analysis", "reduced_system", "complete", "diagnosis", "solutions", "unresolved", "stats"})
+    CHECK(j.contains(k), "missing key " << k);
+  if (failures) return 1;
+
+  // the scene as the file gives it
+  std::map<std::string, std::map<std::string, P3>> bodies;
+  for (const auto& b : scene["bodies"]) {
+    auto& m = bodies[b["name"].get<std::string>()];
+    for (auto it = b["points"].begin(); it != b["points"].end(); ++it)
+      m[it.key()] = {num(it.value()[0]), num(it.value()[1]), num(it.value()[2])};
+  }
+  double scale = 1;
+  for (const auto& b : bodies)
+    for (const auto& p : b.second)
+      for (const auto& q : b.second) scale = std::max(scale, dist(p.second, q.second));
+
+  const auto& sols = j["solutions"];
+  long certified = 0;
+  for (std::size_t s = 0; s < sols.size(); ++s) {
+    const auto& sol = sols[s];
+    for (const char* k : {"certified", "parameters", "bodies", "points", "max_residual"})
+      CHECK(sol.contains(k), "solution " << s << ": missing key " << k);
+    if (sol.value("certified", false)) ++certified;
+    std::map<std::string, P3> pts;
+    for (auto it = sol["points"].begin(); it != sol["points"].end(); ++it)
+      pts[it.key()] = {it.value()[0].get<double>(), it.value()[1].get<double>(), it.value()[2].get<double>()};
+    double worst = 0;
+    // every body rigid
+    for (const auto& b : bodies) {
+      for (const auto& p : b.second)
+        for (const auto& q : b.second) {
+          if (p.first >= q.first) continue;
+          CHECK(pts.count(p.first) && pts.count(q.first), "solution " << s << ": point " << p.first << " or " << q.first << " missing");
+          if (!pts.count(p.first) || !pts.count(q.first)) continue;
+          double e = std::abs(dist(pts[p.first], pts[q.first]) - dist(p.second, q.second));
+          worst = std::max(worst, e);
+          CHECK(e <= tol * scale, "solution " << s << ": body " << b.first << " distance " << p.first << "-" << q.first << " off by " << e);
+        }
+      // the printed pose maps the file's coordinates onto the printed points
+      const auto& bj = sol["bodies"][b.first];
+      if (b.second.size() >= 3 && !bj["rotation"].is_null()) {
+        for (const auto& p : b.second) {
+          P3 x;
+          for (int r = 0; r < 3; ++r)
+            x[r] = bj["rotation"][r][0].get<double>() * p.second[0] + bj["rotation"][r][1].get<double>() * p.second[1] +
+                   bj["rotation"][r][2].get<double>() * p.second[2] + bj["translation"][r].get<double>();
+          double e = dist(x, pts[p.first]);
+          CHECK(e <= 1e3 * tol * scale, "solution " << s << ": the pose of " << b.first << " puts " << p.first << " off by " << e);
+        }
+      }
+    }
+    // every distance
+    if (scene.contains("distances"))
+      for (const auto& d : scene["distances"]) {
+        std::string a = d["between"][0], b = d["between"][1];
+        double want = d.contains("length") ? num(d["length"]) : std::sqrt(num(d["squared"]));
+        if (!pts.count(a) || !pts.count(b)) { CHECK(false, "solution " << s << ": distance point missing"); continue; }
+        double e = std::abs(dist(pts[a], pts[b]) - want);
+        worst = std::max(worst, e);
+        CHECK(e <= tol * scale, "solution " << s << ": distance " << a << "-" << b << " off by " << e);
+      }
+    CHECK(sol["max_residual"].get<double>() <= tol * scale, "solution " << s << ": reported residual " << sol["max_residual"]);
+    // distinct configurations
+    for (std::size_t t = 0; t < s; ++t) {
+      double d = 0;
+      for (auto it = sols[t]["points"].begin(); it != sols[t]["points"].end(); ++it) {
+        P3 q = {it.value()[0].get<double>(), it.value()[1].get<double>(), it.value()[2].get<double>()};
+        d = std::max(d, dist(q, pts[it.key()]));
+      }
+      CHECK(d > 1e-7 * scale, "solutions " << t << " and " << s << " are the same configuration");
+    }
+  }
+  auto want_bool = [&](const std::string& k, bool got) {
+    if (expect.count(k)) CHECK((expect[k] == "true") == got, k << ": got " << got << ", expected " << expect[k]);
+  };
+  want_bool("--complete", j["complete"].get<bool>());
+  if (expect.count("--solutions")) CHECK(long(sols.size()) == std::stol(expect["--solutions"]), "solutions: " << sols.size() << ", expected " << expect["--solutions"]);
+  if (expect.count("--certified")) CHECK(certified == std::stol(expect["--certified"]), "certified: " << certified << ", expected " << expect["--certified"]);
+  if (expect.count("--diagnosis")) {
+    std::string d = j["diagnosis"].is_null() ? std::string() : j["diagnosis"].get<std::string>();
+    CHECK(d.rfind(expect["--diagnosis"], 0) == 0, "diagnosis '" << d << "' does not start with " << expect["--diagnosis"]);
+  }
+  if (expect.count("--unresolved-reason")) {
+    bool any = false;
+    for (const auto& u : j["unresolved"]) {
+      CHECK(u.contains("class") && u.contains("reason") && u.contains("box") && u.contains("points"), "unresolved entry incomplete");
+      if (u["reason"].get<std::string>().find(expect["--unresolved-reason"]) != std::string::npos) any = true;
+    }
+    CHECK(any, "no unresolved region with reason containing '" << expect["--unresolved-reason"] << "'");
+  }
+  if (j["complete"].get<bool>()) CHECK(j["unresolved"].empty() && j["diagnosis"].is_null(), "complete with unresolved regions or a diagnosis");
+  std::cout << "solve_json_check " << argv[1] << ": " << sols.size() << " solutions, " << checks << " checks, " << failures << " failures\n";
+  return failures ? 1 : 0;
+}
