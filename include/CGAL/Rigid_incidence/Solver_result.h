@@ -63,6 +63,9 @@ struct Subdivision_solver_parameters
   bool preconditioning = true;
   /// Domain reduction by projected-polyhedron clipping (else plain bisection).
   bool domain_reduction = true;
+  /// Domain reduction is repeated while it leaves at most this fraction of every variable's
+  /// width; a weaker reduction is followed by a split.
+  double reduction_ratio = 0.7;
   /// How to choose the variable to split.
   Split_strategy split = Split_strategy::LARGEST_WIDTH;
 };

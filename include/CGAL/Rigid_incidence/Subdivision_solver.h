@@ -151,7 +151,8 @@ private:
     std::vector<double> initial_width;    // per variable
     double min_width;
     double singular_width;
-    double last_contraction = 0;          // ||I - Y J(X)|| of the last Krawczyk test
+    double last_contraction = 0;
+    double precondition_width = getenv("PW") ? atof(getenv("PW")) : 1.0;          // ||I - Y J(X)|| of the last Krawczyk test
     bool exact_coefficients;
     Shape full;                           // all variables, the highest degree of each
     bool precondition;
@@ -371,7 +372,7 @@ private:
         double ratio = 1;
         if (!reduce(x, ratio)) { ++result.statistics.excluded; return; }
         if (ratio < 0.5) converging = true;
-        if (ratio > 0.5) break;  // weak contraction: split instead
+        if (ratio > P.reduction_ratio) break;  // weak contraction: split instead
       }
       if (!found.empty() && inside_found(x)) return;  // its only possible root is known
       double rel = 0;
@@ -462,7 +463,10 @@ private:
           done = true;
         }
       }
-      if (!done) {
+      (void)done;
+      {
+        // the equations themselves (the projected-polyhedron method): cheap, and on large
+        // boxes often sharper than the preconditioned ones, whose linearization is poor there
         for (std::size_t i = 0; i < n; ++i) {
           const Shape& s = eq[i].shape;
           for (std::size_t k = 0; k < s.variables.size(); ++k) {
