@@ -151,8 +151,7 @@ private:
     std::vector<double> initial_width;    // per variable
     double min_width;
     double singular_width;
-    double last_contraction = 0;
-    double precondition_width = getenv("PW") ? atof(getenv("PW")) : 1.0;          // ||I - Y J(X)|| of the last Krawczyk test
+    double last_contraction = 0;          // ||I - Y J(X)|| of the last Krawczyk test
     bool exact_coefficients;
     Shape full;                           // all variables, the highest degree of each
     bool precondition;
