@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# The main job: install what is missing, build, and analyze the shipped tetra scene.
+# The main job: install what is missing, build, analyze the shipped tetra scene and solve it:
+# every real configuration, certified, drawn side by side in an SVG gallery.
 # Usage: scripts/demo.sh [SCENE.json]   (default: examples/Rigid_incidence/data/tetra.json)
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
@@ -14,3 +15,8 @@ if command -v dot >/dev/null; then
   echo
   echo "overlap graph with the incidence tree: $build/overlap_graph.svg"
 fi
+echo
+"$build/examples/Rigid_incidence/rigid_incidence" solve "$scene" --svg "$build/configurations.svg"
+echo
+echo "the configurations side by side: $build/configurations.svg"
+
