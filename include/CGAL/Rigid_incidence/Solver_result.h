@@ -138,7 +138,7 @@ struct Solver_result
   /// empty, or what the unresolved boxes suggest, e.g. "positive_dimensional: Jacobian
   /// rank-deficient along a chain of 812 boxes"
   std::string diagnosis;
-  Solver_statistics statistics;
+  Solver_statistics statistics;                  ///< counters of the solve
   bool fast = false;                             ///< solved in the fast, non-certified mode
   /// no unknown or pending box is left and every root is certified
   bool complete() const

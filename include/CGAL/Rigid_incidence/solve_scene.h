@@ -96,7 +96,7 @@ struct Scene_solve_result
   bool fast = false;                               ///< solved in the fast, non-certified mode
   std::vector<std::string> variables;              ///< the reduced system's parameters
   std::size_t equations = 0;                       ///< the reduced system's equations
-  Scene_solve_statistics statistics;
+  Scene_solve_statistics statistics;              ///< counters and times per stage
   /// every configuration certified and nothing unresolved
   bool complete() const
   {
@@ -172,7 +172,10 @@ the original system, and roots found in two charts merged.
 has coordinates (then a root the double precision cannot certify is retried with more bits),
 else `CGAL::Interval_nt<false>` or `CGAL::Gmpfi`
 \param original the collection as the scene file gives it (for the residuals)
-\param c its standard collection, `tree` and `selection` as `analyze` finds them
+\param c its standard collection (`standardize()`)
+\param tree the incidence tree of `c` (`optimal_incidence_tree()`)
+\param selection the well-formed incidences for `tree` (`select_well_formed_incidences()`)
+\param parameters the solver's parameters and the tolerances of merging and verification
 */
 template <class IT, class NT, class Traits>
 Scene_solve_result solve_scene(const Rigid_body_collection<Traits>& original, const Rigid_body_collection<Traits>& c,
