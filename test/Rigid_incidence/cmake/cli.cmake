@@ -268,8 +268,13 @@ if(TARGET rigid_incidence)
     tetra "--solutions|4|--certified|4|--complete|true"
     tetra_ii "--solutions|4|--certified|4|--complete|true"
     pent "--solutions|8|--certified|8|--complete|true"
+    tetra_iii "--solutions|12|--certified|12|--complete|true"
+    pent_iv "--solutions|8|--certified|8|--complete|true"
+    quad_distinct "--solutions|16|--certified|16|--complete|true"
     tetra_i "--complete|false|--unresolved-reason|multiple"
-    quad "--complete|false|--diagnosis|positive_dimensional")
+    tetra_i_tangent "--complete|false|--unresolved-reason|multiple"
+    quad "--complete|false|--diagnosis|positive_dimensional"
+    quad_symmetric "--complete|false|--diagnosis|positive_dimensional")
   list(LENGTH _ri_solve_table _n)
   math(EXPR _last "${_n} - 1")
   foreach(_i RANGE 0 ${_last} 2)
