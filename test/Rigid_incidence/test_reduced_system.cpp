@@ -247,7 +247,9 @@ struct Generator
   {
     static const int ab[6][2] = {{0, 1}, {1, 1}, {1, -1}, {1, 1000}, {2, 3}, {5, -1}}; // half turn, |t| = 1 twice, near half turn, ...
     const int a = ab[kind % 6][0], b = ab[kind % 6][1];
-    return Quat{Q(a), Q(b) * u.x, Q(b) * u.y, Q(b) * u.z};
+    // the charts' quaternion is (L a, b u), L the power of two nearest |u|
+    const Q L(std::ldexp(1.0, int(std::lround(std::log2(std::sqrt(CGAL::to_double(u.x * u.x + u.y * u.y + u.z * u.z)))))));
+    return Quat{L * Q(a), Q(b) * u.x, Q(b) * u.y, Q(b) * u.z};
   }
   Quat special_free(int kind)
   {
@@ -565,17 +567,22 @@ static Scene_result check_planted(const Plant& P, const std::string& what, Plant
       const QP vex{(Ru[7] - Ru[5]) / 2, (Ru[2] - Ru[6]) / 2, (Ru[3] - Ru[1]) / 2};
       const Q one_plus_cos = (1 + Ru[0] + Ru[4] + Ru[8]) / 2;
       const Q uu = planted::dot(u, u);
-      if (one_plus_cos == 0) { chart = 1; rv = {Q(0)}; ++st.hinge_half;  }
+      // charts: q = (L a, b u) with L the power of two nearest |u|, so b / a = tan(theta / 2) L / |u|;
+      // stereographic: q = (1, t u), t = tan(theta / 2) / |u|
+      const Q L(std::ldexp(1.0, int(std::lround(std::log2(std::sqrt(CGAL::to_double(uu)))))));
+      Q stereo_t(0);
+      bool stereo_half = false;
+      if (one_plus_cos == 0) { chart = 1; rv = {Q(0)}; ++st.hinge_half; stereo_half = true; }
       else {
-        Q tt = planted::dot(vex, u) / uu / one_plus_cos;
+        stereo_t = planted::dot(vex, u) / uu / one_plus_cos;
+        Q tt = stereo_t * L;
         if (abs_q(tt) == 1) { ++st.hinge_border;  }
         if (abs_q(tt) > 1) { chart = 1; rv = {1 / tt}; if (abs_q(tt) >= 100) { ++st.hinge_near_half;  } }
         else rv = {tt};
       }
       st.hinge_chart1 += chart == 1;
       // stereographic: the single chart a = 1, b = t (no half turn)
-      if (chart == 0) stereo_values.push_back(rv);
-      else if (rv[0] != 0) stereo_values.push_back({1 / rv[0]});
+      if (!stereo_half) stereo_values.push_back({stereo_t});
       else { stereo_ok = false; stereo_values.push_back({}); }
     } else {
       ++st.free_rotations;
@@ -1059,10 +1066,11 @@ static void check_quad_r0()
   // Section 4: "change of variables then maps each finite domain to [0..1]"); checked here:
   // eq. (5) on the diagonal is (4 t^2 - 4 t - 1)^2, whose roots x = 2 t - 1 = +-sqrt(2) are the
   // pyramid, tan(theta / 2) = sqrt 2 for the fold with cos(theta) = -1/3 of a triangle of height
-  // 3 on a side of half-length 1. Ours is t_ours = tan(theta' / 2) / |u| with |u| = 2, theta'
+  // 3 on a side of half-length 1. Ours is t_ours = tan(theta' / 2) L / |u| with |u| = 2 and L = 2
+  // (the power of two nearest |u|), so t_ours = tan(theta' / 2), theta'
   // measured from the alignment A: the planar outward placement, or the inward one (theta' =
   // theta + pi, tan = -1 / x) when A is a half turn off the plane, and either sense of turning.
-  // So 2 t_ours is one of x, -x, 1/x, -1/x per variable; each of our equations at r = 0 must be
+  // So t_ours is one of x, -x, 1/x, -1/x per variable; each of our equations at r = 0 must be
   // a constant times eq. (5) after that substitution (denominators cleared).
   {
     Q d(0);
@@ -1089,14 +1097,14 @@ static void check_quad_r0()
     pairs.insert(pr);
     int bi = std::stoi(body_of(names[vi]).substr(1)), bj = std::stoi(body_of(names[vj]).substr(1));
     CHECK(bj == bi % 4 + 1 || bi == bj % 4 + 1, "quad r = 0: " << E1.label << " joins c" << bi << " and c" << bj);
-    // the substitution, per variable: 2 t_ours = f(x), x = 2 t_paper - 1; compare on a 5 x 5 grid
+    // the substitution, per variable: t_ours = f(x), x = 2 t_paper - 1; compare on a 5 x 5 grid
     // (a polynomial of degree 2 in each of two variables is fixed by 3 x 3 values)
     auto ours = [&](int mode, const Q& x, Q& scale) { // returns t_ours, scale = the cleared denominator factor
       switch (mode) {
-      case 0: scale = 1; return x / 2;
-      case 1: scale = 1; return -x / 2;
-      case 2: scale = x * x; return 1 / (2 * x);
-      default: scale = x * x; return -1 / (2 * x);
+      case 0: scale = 1; return x;
+      case 1: scale = 1; return -x;
+      case 2: scale = x * x; return 1 / x;
+      default: scale = x * x; return -1 / x;
       }
     };
     int matches = 0;
@@ -1119,9 +1127,9 @@ static void check_quad_r0()
           }
         if (ok) { ++matches; found += " (" + std::to_string(mi) + "," + std::to_string(mj) + ")"; }
       }
-    CHECK(matches >= 1, "quad r = 0: " << E1.label << " is no multiple of eq. (5) under t_ours = +-x/2 or +-1/(2x)");
+    CHECK(matches >= 1, "quad r = 0: " << E1.label << " is no multiple of eq. (5) under t_ours = +-x or +-1/x");
     std::cout << "quad r = 0: " << E1.label << " in " << names[vi] << ", " << names[vj] << " = c * eq.(5) for substitutions" << found
-              << " (0: x/2, 1: -x/2, 2: 1/(2x), 3: -1/(2x))\n";
+              << " (0: x, 1: -x, 2: 1/x, 3: -1/x)\n";
   }
   CHECK(pairs.size() == 4, "quad r = 0: the equations do not pair the four neighbouring hinges");
 }

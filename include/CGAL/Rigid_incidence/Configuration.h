@@ -98,7 +98,10 @@ inline Rigid_fit fit_rigid_motion(const std::vector<std::array<double, 3>>& y, c
   }
   Eigen::JacobiSVD<Eigen::Matrix3d> svd(H, Eigen::ComputeFullU | Eigen::ComputeFullV);
   Eigen::Vector3d sv = svd.singularValues();
-  if (!(scale > 0) || sv(1) <= 1e-12 * sv(0)) return f; // collinear: the rotation about the line is free
+  // collinear: the rotation about the line is free. The singular values are products of two
+  // lengths (a triangle of height h and side 1 has sv(1) ~ h^2), and their round-off is a
+  // few units in the last place of sv(0): only below that is the body collinear
+  if (!(scale > 0) || sv(1) <= 64 * std::numeric_limits<double>::epsilon() * sv(0)) return f;
   Eigen::Matrix3d D = Eigen::Matrix3d::Identity();
   const double det = (svd.matrixV() * svd.matrixU().transpose()).determinant();
   if (det < 0) D(2, 2) = -1;

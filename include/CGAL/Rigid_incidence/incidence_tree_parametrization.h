@@ -90,10 +90,12 @@ any ancestor body (the root's frame is the reduced system's world frame).
 Each edge (parent p, child c) maps c's frame into p's: x -> o + M(q) (x - s) / D(q), where
 M(q) / D(q) is a rotation written in homogeneous quaternion coordinates q = (q0, q1, q2, q3):
 M(q) is the usual quadratic form (R(q) |q|^2) and D(q) = |q|^2.
-- Shared pair {v, w} (k = 2, one parameter): q = (a, b u) with u = w_p - v_p the pair's
+- Shared pair {v, w} (k = 2, one parameter): q = (L a, b u) with u = w_p - v_p the pair's
   direction in p's frame, left unnormalized so that rational data give rational
-  coefficients; chart 0 is a = 1, b = t in [-1, 1], chart 1 is b = 1, a = s in [-1, 1]
-  (tan(theta / 2) = t |u| and |u| / s: both charts together reach every angle). The
+  coefficients, and L the power of two nearest |u| (so that the parameter does not depend
+  on the scene's scale); chart 0 is a = 1, b = t in [-1, 1], chart 1 is b = 1, a = s in
+  [-1, 1] (tan(theta / 2) = t |u| / L and |u| / (L s): both charts together reach every
+  angle). The
   constant rotation A that takes c's direction w_c - v_c onto u is a product of two
   reflections (rational when the two lengths agree exactly); o = v_p, s = v_c, M = M_u A.
 - Shared point v (k = 1, three parameters): chart j has q_j = 1 and the other three
@@ -528,7 +530,15 @@ private:
       std::array<NT, 9> A = alignment(a, u, what);
       A_[k] = A;
       Polynomial qa = one, qb = var(e.rotation[0]);
-      if (form_ == Rotation_form::QUATERNION_CHARTS && e.chart == 1) std::swap(qa, qb);
+      if (form_ == Rotation_form::QUATERNION_CHARTS) {
+        // q = (L a, b u) with L a power of two near |u| (exact in any number type): then
+        // tan(theta / 2) = (b / a) |u| / L is within a factor sqrt(2) of b / a whatever the
+        // scene's scale, so the roots stay in the middle of the chart boxes
+        const double len = std::sqrt(CGAL::to_double(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]));
+        const int ex = (len > 0 && std::isfinite(len)) ? int(std::lround(std::log2(len))) : 0;
+        qa = cst(NT(std::ldexp(1.0, ex)));
+        if (e.chart == 1) qa = qa * qb, qb = one;
+      }
       std::array<Polynomial, 4> q{qa, u[0] * qb, u[1] * qb, u[2] * qb};
       std::array<Polynomial, 9> Mu = quaternion_matrix(q);
       for (int i = 0; i < 3; ++i)

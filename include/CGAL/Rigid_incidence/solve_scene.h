@@ -30,11 +30,12 @@ struct Scene_solve_parameters
   /// parameters of the solver, for each chart combination
   Subdivision_solver_parameters solver;
   /// two roots are one configuration if no point moves more than this, relative to the size
-  /// of the scene (the bounding box diagonal of the configuration, at least 1)
+  /// of the scene (the bounding box diagonal of the configuration)
   double merge_tolerance = 1e-9;
   /// a root whose configuration has a residual above this in the original system (relative
-  /// to the size of the scene) is not a configuration of the scene (a body outside the
-  /// covering set that only fits mirrored); it is counted in `Scene_solve_statistics::spurious`
+  /// to the size of the scene for incidences, to its square for squared distances) is not a
+  /// configuration of the scene (a body outside the covering set that only fits mirrored);
+  /// it is counted in `Scene_solve_statistics::spurious`
   double residual_threshold = 1e-6;
 };
 
@@ -78,7 +79,7 @@ struct Scene_solve_statistics
   std::size_t krawczyk_tests = 0;          ///< all systems
   std::size_t roots = 0;                   ///< roots before merging
   std::size_t duplicates = 0;              ///< roots merged into a configuration found before
-  std::size_t spurious = 0;                ///< roots rejected by the original system
+  std::size_t spurious = 0;                ///< roots rejected: a body would have to be mirrored
   double reduce_seconds = 0;               ///< building the reduced systems
   double solve_seconds = 0;                ///< the subdivision solver
   double verify_seconds = 0;               ///< back-substitution and residuals
@@ -156,7 +157,17 @@ inline double configuration_size(const Configuration& a)
   }
   double s = 0;
   for (int k = 0; k < 3; ++k) s += (hi[k] - lo[k]) * (hi[k] - lo[k]);
-  return (std::max)(1.0, std::sqrt(s));
+  s = std::sqrt(s);
+  return s > 0 ? s : 1.0;
+}
+
+// A configuration satisfies the original system: incidences and body fits (lengths) within
+// `threshold` times the scene's size, distances (squared lengths) within `threshold` times its
+// square, nothing mirrored or unplaced.
+inline bool verified(const Residual_report& r, double threshold, double size)
+{
+  if (!r.complete || r.mirrored) return false;
+  return r.max_incidence <= threshold * size && r.max_distance <= threshold * size * size;
 }
 
 } // namespace internal
@@ -216,7 +227,16 @@ Scene_solve_result solve_scene(const Rigid_body_collection<Traits>& original, co
       Polynomial_system<NT> sys = r.system();
       st.reduce_seconds += since(t1);
       auto t2 = Clock::now();
-      Solver_result<IT> res = Subdivision_solver<IT>(parameters.solver).solve(sys);
+      Solver_result<IT> res;
+      if (sys.number_of_variables() == 0) {
+        // one body, or bodies fixed by the placements alone: the configuration is the
+        // placement itself (each placement variant is one)
+        Solver_root<IT> root;
+        root.certified = true;
+        res.roots.push_back(root);
+      } else {
+        res = Subdivision_solver<IT>(parameters.solver).solve(sys);
+      }
       double ts = since(t2);
       st.solve_seconds += ts;
       ++st.chart_combinations;
@@ -241,7 +261,19 @@ Scene_solve_result solve_scene(const Rigid_body_collection<Traits>& original, co
         s.residuals = residuals(original, s.configuration);
         s.max_residual = s.residuals.max();
         const double size = internal::configuration_size(s.configuration);
-        if (!(s.max_residual <= parameters.residual_threshold * size)) { ++st.spurious; continue; }
+        if (!internal::verified(s.residuals, parameters.residual_threshold, size)) {
+          if (s.residuals.mirrored && s.residuals.complete) { ++st.spurious; continue; }  // needs a reflection: not a configuration
+          // not verified for another reason: say so rather than drop it
+          Scene_unresolved x;
+          x.kind = Box_class::UNKNOWN;
+          x.reason = "root of the reduced system not verified in the original system (residual " + std::to_string(s.max_residual) + ")";
+          x.charts = charts;
+          x.placements = placements;
+          x.box = s.parameters;
+          x.at_centre = s.configuration;
+          out.unresolved.push_back(std::move(x));
+          continue;
+        }
         bool merged = false;
         for (auto& f : found) {
           if (internal::configuration_distance(f.s.configuration, s.configuration) <= parameters.merge_tolerance * (std::max)(size, f.size)) {
