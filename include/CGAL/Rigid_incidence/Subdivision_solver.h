@@ -191,7 +191,7 @@ private:
       if constexpr (std::is_same<NT, CGAL::Gmpq>::value || std::is_same<NT, double>::value) {
 #ifdef CGAL_USE_MPFI
         const unsigned bits = (std::max)(2 * O::bits(), 106u);
-        if (!P.fast && P.maximal_precision >= bits) {
+        if (!P.fast && P.maximal_precision > 0 && (std::max)(P.maximal_precision, 2 * P.precision) >= bits) {
           // solve a region again with CGAL::Gmpfi at twice the precision
           retry = [&sys, this, bits](const std::vector<Bound>& lo, const std::vector<Bound>& hi, Solver_result<IT>& out) {
             Polynomial_system<NT> sub = sys;
@@ -204,6 +204,7 @@ private:
             }
             Subdivision_solver_parameters q = P;
             q.precision = bits;
+            if (P.maximal_precision < 2 * bits) q.maximal_precision = 0;  // one doubling only, unless asked for more
             q.minimal_width = min_width / 4;
             q.singular_width = -1;  // down to the minimal width: separate close roots
             q.maximal_boxes = P.maximal_boxes / 8 + 1;
@@ -352,6 +353,21 @@ private:
       return false;
     }
 
+    // Some equation's coefficient enclosures are wide compared with the coefficients.
+    bool blurred(const Node& x) const
+    {
+      for (const auto& b : x.b) {
+        double big = 0, wide = 0;
+        for (const IT& c : b) {
+          double l = O::lower_double(c), h = O::upper_double(c);
+          big = (std::max)(big, (std::max)(std::abs(l), std::abs(h)));
+          wide = (std::max)(wide, h - l);
+        }
+        if (wide > 1e-6 * big) return true;
+      }
+      return false;
+    }
+
     bool inside_found(const Node& x) const
     {
       for (const auto& f : found) {
@@ -367,6 +383,12 @@ private:
       bool converging = false;
       for (int round = 0; round < 32; ++round) {
         if (excluded(x)) { ++result.statistics.excluded; return; }
+        if (round == 0 && x.depth > 0 && blurred(x)) {
+          // the subdivided arrays carry the rounding of every level above: convert the
+          // equations afresh on this box, which is exact up to one rounding per operation
+          for (std::size_t i = 0; i < n; ++i) x.b[i] = bernstein(eq[i], x.lo, x.hi);
+          if (excluded(x)) { ++result.statistics.excluded; return; }
+        }
         if (!P.domain_reduction) break;
         double ratio = 1;
         if (!reduce(x, ratio)) { ++result.statistics.excluded; return; }
@@ -538,10 +560,13 @@ private:
           std::vector<IT> xl;
           for (std::size_t v : s.variables) xl.push_back(X[v]);
           IT h = internal::horner(eq[i].dshape[k], eq[i].dpower[k], xl);
-          IT bb = O::make(mn, mx) / w[j];
-          Bound l = O::lower(h) < O::lower(bb) ? O::lower(bb) : O::lower(h);
-          Bound u = O::upper(bb) < O::upper(h) ? O::upper(bb) : O::upper(h);
-          J[i][j] = u < l ? bb : O::make(l, u);
+          if (!(O::lower(w[j]) > 0)) { J[i][j] = h; }  // a point in x_j: the evaluation alone
+          else {
+            IT bb = O::make(mn, mx) / w[j];
+            Bound l = O::lower(h) < O::lower(bb) ? O::lower(bb) : O::lower(h);
+            Bound u = O::upper(bb) < O::upper(h) ? O::upper(bb) : O::upper(h);
+            J[i][j] = u < l ? bb : O::make(l, u);
+          }
           Jm(i, j) = 0.5 * O::lower_double(J[i][j]) + 0.5 * O::upper_double(J[i][j]);
         }
       }
@@ -596,8 +621,14 @@ private:
       const double eps = std::ldexp(1.0, 16 - int(O::bits()));
       std::vector<Bound> c(n), lo(n), hi(n);
       std::vector<IT> margin(n);
+      // (and at least 1e-12 of the widest relative width: a box the clipping made thin in
+      // one variable must not be thinner than what the double-precision preconditioner Y
+      // leaks into it from the others)
+      double widest = 0;
+      for (std::size_t j = 0; j < n; ++j) widest = (std::max)(widest, width(x, j) / initial_width[j]);
       for (std::size_t j = 0; j < n; ++j) {
         double floor = eps * ((std::max)(std::abs(O::to_double(x.lo[j])), std::abs(O::to_double(x.hi[j]))) + initial_width[j]);
+        floor = (std::max)(floor, 1e-12 * widest * initial_width[j]);
         margin[j] = width_interval(x.lo[j], x.hi[j]) * IT(0.1) + IT(floor);
         c[j] = midpoint_or_point(x.lo[j], x.hi[j]);
       }
@@ -614,7 +645,20 @@ private:
       std::vector<IT> K;
       bool inside, empty;
       if (!krawczyk(lo, hi, b, K, inside, empty)) return false;
-      if (empty || !inside) return false;
+      if (empty) return false;
+      if (!inside && last_contraction < 0.5) {
+        // epsilon-inflation (Rump): the box was too thin for K to fit; once more on the hull
+        // of the box and K, widened
+        for (std::size_t j = 0; j < n; ++j) {
+          Bound l = O::lower(K[j]) < lo[j] ? O::lower(K[j]) : lo[j], h = hi[j] < O::upper(K[j]) ? O::upper(K[j]) : hi[j];
+          IT w = width_interval(l, h) * IT(0.5);
+          lo[j] = O::lower(pt(l) - w);
+          hi[j] = O::upper(pt(h) + w);
+        }
+        for (std::size_t i = 0; i < n; ++i) b[i] = bernstein(eq[i], lo, hi);
+        if (!krawczyk(lo, hi, b, K, inside, empty) || empty) return false;
+      }
+      if (!inside) return false;
       ++result.statistics.certified_boxes;
       // tighten: Z <- K(Z) ∩ Z
       std::vector<Bound> zlo(n), zhi(n);
@@ -672,9 +716,6 @@ private:
     {
       double w = max_width(zlo, zhi);
       for (int it = 0; it < 64 && w > P.tolerance; ++it) {
-        bool degenerate = false;
-        for (std::size_t j = 0; j < n; ++j) if (!(zlo[j] < zhi[j])) degenerate = true;
-        if (degenerate) break;
         std::vector<std::vector<IT>> b;
         for (const auto& e : eq) b.push_back(bernstein(e, zlo, zhi));
         std::vector<IT> K;
@@ -685,7 +726,7 @@ private:
           if (O::upper(K[j]) < zhi[j]) zhi[j] = O::upper(K[j]);
         }
         double nw = max_width(zlo, zhi);
-        if (!(nw < 0.9 * w)) { w = nw; break; }
+        if (!(nw < w)) break;  // no progress: the precision is exhausted
         w = nw;
       }
     }
@@ -782,7 +823,10 @@ private:
         kh[j] = O::bound_from_double(hi[j]);
       }
       record(z, z, kl, kh, false);
-      return true;
+      // the box may hold other roots: it is done only if the Jacobian is regular on it
+      std::vector<IT> K;
+      bool inside, empty;
+      return krawczyk(x.lo, x.hi, x.b, K, inside, empty) && last_contraction < 1;
     }
 
     void make_unknown(Node& x, bool small, bool singular = false)
