@@ -84,7 +84,7 @@ template <class IT>
 struct Solver_root
 {
   std::vector<IT> enclosure;       ///< per variable, an interval containing the root
-  std::vector<double> approximation; ///< per variable, a point of the enclosure
+  std::vector<double> approximation; ///< per variable, the double nearest a point of the enclosure
   /// proved: the (interval-inflated) Krawczyk box holds exactly one root, and the root is in
   /// `enclosure`; false only in fast mode
   bool certified = false;
@@ -92,6 +92,9 @@ struct Solver_root
   bool on_boundary = false;
   /// an upper bound of max_i |f_i| over `enclosure`
   double residual = 0;
+  /// the box in which the root is proved to be the only one (the Krawczyk box; contains
+  /// `enclosure`)
+  std::vector<IT> uniqueness_box;
 };
 
 /// \ingroup PkgRigidIncidenceSolver

@@ -216,6 +216,7 @@ private:
               y.certified = x.certified;
               y.on_boundary = x.on_boundary;
               y.residual = x.residual;
+              for (const auto& e : x.uniqueness_box) y.uniqueness_box.push_back(O::from(e));
               out.roots.push_back(y);
             }
             for (const auto& x : r.unresolved) {
@@ -771,6 +772,7 @@ private:
       f.root.certified = certified;
       f.root.on_boundary = boundary;
       for (std::size_t j = 0; j < n; ++j) {
+        f.root.uniqueness_box.push_back(O::make(klo[j], khi[j]));
         f.root.enclosure.push_back(O::make(zlo[j], zhi[j]));
         f.root.approximation.push_back(O::to_double(midpoint_or_point(zlo[j], zhi[j])));
       }
@@ -869,7 +871,8 @@ private:
           result.statistics.krawczyk_tests += sub.statistics.krawczyk_tests;
           for (const auto& r : sub.roots) {
             std::vector<Bound> rl = lower_of(r.enclosure), rh = upper_of(r.enclosure);
-            record(rl, rh, rl, rh, r.certified);
+            const auto& u = r.uniqueness_box.empty() ? r.enclosure : r.uniqueness_box;
+            record(rl, rh, lower_of(u), upper_of(u), r.certified);
           }
           for (auto& v : sub.unresolved) result.unresolved.push_back(v);
           continue;
