@@ -248,6 +248,18 @@ Scene_solve_result solve_scene(const Rigid_body_collection<Traits>& original, co
       }
       if (positive.empty() && !res.diagnosis.empty()) positive = res.diagnosis;
       auto t3 = Clock::now();
+      auto unresolved = [&](Box_class kind, const std::string& reason, const std::vector<std::pair<double, double>>& box, std::size_t boxes,
+                            const Configuration& at) {
+        Scene_unresolved x;
+        x.kind = kind;
+        x.reason = reason;
+        x.charts = charts;
+        x.placements = placements;
+        x.box = box;
+        x.boxes = boxes;
+        x.at_centre = at;
+        return x;
+      };
       for (const auto& root : res.roots) {
         ++st.roots;
         Scene_configuration s;
@@ -264,14 +276,8 @@ Scene_solve_result solve_scene(const Rigid_body_collection<Traits>& original, co
         if (!internal::verified(s.residuals, parameters.residual_threshold, size)) {
           if (s.residuals.mirrored && s.residuals.complete) { ++st.spurious; continue; }  // needs a reflection: not a configuration
           // not verified for another reason: say so rather than drop it
-          Scene_unresolved x;
-          x.kind = Box_class::UNKNOWN;
-          x.reason = "root of the reduced system not verified in the original system (residual " + std::to_string(s.max_residual) + ")";
-          x.charts = charts;
-          x.placements = placements;
-          x.box = s.parameters;
-          x.at_centre = s.configuration;
-          out.unresolved.push_back(std::move(x));
+          out.unresolved.push_back(unresolved(Box_class::UNKNOWN, "root of the reduced system not verified in the original system (residual " +
+                                                  std::to_string(s.max_residual) + ")", s.parameters, 1, s.configuration));
           continue;
         }
         bool merged = false;
@@ -287,20 +293,13 @@ Scene_solve_result solve_scene(const Rigid_body_collection<Traits>& original, co
         if (!merged) found.push_back({s, size});
       }
       for (const auto& u : res.unresolved) {
-        Scene_unresolved x;
-        x.kind = u.kind;
-        x.reason = u.reason;
-        x.charts = charts;
-        x.placements = placements;
-        x.boxes = u.boxes;
+        std::vector<std::pair<double, double>> box;
         std::vector<double> centre;
         for (const auto& e : u.box) {
-          auto b = CGAL::to_interval(e);
-          x.box.push_back(b);
-          centre.push_back(0.5 * b.first + 0.5 * b.second);
+          box.push_back(CGAL::to_interval(e));
+          centre.push_back(0.5 * box.back().first + 0.5 * box.back().second);
         }
-        x.at_centre = configuration(r, centre);
-        out.unresolved.push_back(std::move(x));
+        out.unresolved.push_back(unresolved(u.kind, u.reason, box, u.boxes, configuration(r, centre)));
       }
       st.verify_seconds += since(t3);
     } while (internal::next_combination(charts, radix_c));
