@@ -25,12 +25,13 @@
 #include <CGAL/Real_timer.h>
 #include <CGAL/Rigid_incidence.h>
 
+#include "benchmark_common.h" // RI, K, Traits, Collection, RIGID_INCIDENCE_DATA_DIR, helpers
+
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <ctime>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
@@ -40,22 +41,14 @@
 #include <string>
 #include <vector>
 
-#include <poll.h>
-#include <signal.h>
-#include <sys/resource.h>
-#include <sys/utsname.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
-#ifndef RIGID_INCIDENCE_DATA_DIR
-#define RIGID_INCIDENCE_DATA_DIR "examples/Rigid_incidence/data"
-#endif
-
-namespace RI = CGAL::Rigid_incidence;
-typedef CGAL::Simple_cartesian<CGAL::Gmpq> K;
-typedef RI::Rigid_incidence_traits<K> Traits;
-typedef RI::Rigid_body_collection<Traits> Collection;
 typedef CGAL::Gmpq Q;
+
+using benchmark_common::fixed;
+using benchmark_common::fmt;
+using benchmark_common::md_escape;
+using benchmark_common::ratio_text;
 
 // ------------------------------------------------------------------ random planted scenes
 // Points at random integer world positions; bodies of 3 to 5 points. A tree phase: each body
@@ -421,65 +414,21 @@ static Stats build_naive(const Collection& user, RI::Naive_form form)
 template <class F>
 Stats run_cell(F build, double cap)
 {
-  std::cout.flush();
-  std::cerr.flush();
-  int fd[2];
+  const benchmark_common::Forked child = benchmark_common::run_forked<Stats>(
+      build, [](Stats& r, const std::string& m) { set_message(r, m); },
+      [](const Stats& r) { return std::string(reinterpret_cast<const char*>(&r), sizeof r); }, cap);
   Stats s;
-  if (pipe(fd) != 0) { set_message(s, "pipe() failed"); return s; }
-  pid_t pid = fork();
-  if (pid < 0) { set_message(s, "fork() failed"); close(fd[0]); close(fd[1]); return s; }
-  if (pid == 0) {
-    close(fd[0]);
-    struct rlimit lim;
-    lim.rlim_cur = lim.rlim_max = rlim_t(8) << 30; // 8 GiB of address space per cell
-    setrlimit(RLIMIT_AS, &lim);
-    Stats r;
-    try {
-      r = build();
-    } catch (const std::bad_alloc&) {
-      r = Stats();
-      set_message(r, "out of memory (8 GiB)");
-    } catch (const std::exception& e) {
-      r = Stats();
-      set_message(r, e.what());
-    }
-    ssize_t w = write(fd[1], &r, sizeof r);
-    (void)w;
-    close(fd[1]);
-    _exit(0);
-  }
-  close(fd[1]);
-  CGAL::Real_timer wall;
-  wall.start();
-  std::size_t got = 0;
-  char* buf = reinterpret_cast<char*>(&s);
-  bool timed_out = false;
-  while (got < sizeof s) {
-    double left = cap - wall.time();
-    if (left <= 0) { timed_out = true; break; }
-    struct pollfd p = {fd[0], POLLIN, 0};
-    int k = poll(&p, 1, int(std::ceil(left * 1000)));
-    if (k == 0) { timed_out = true; break; }
-    if (k < 0) continue;
-    ssize_t m = read(fd[0], buf + got, sizeof s - got);
-    if (m <= 0) break;
-    got += std::size_t(m);
-  }
-  close(fd[0]);
-  if (timed_out) kill(pid, SIGKILL);
-  int wstatus = 0;
-  waitpid(pid, &wstatus, 0);
-  if (timed_out) {
-    s = Stats();
+  if (!child.failure.empty()) { set_message(s, child.failure); return s; }
+  if (child.text.size() >= sizeof s) std::memcpy(&s, child.text.data(), sizeof s);
+  else if (child.timed_out) {
     s.status = SKIPPED;
     std::ostringstream m;
     m << "skipped: building takes more than " << cap << " s";
     set_message(s, m.str());
-  } else if (got < sizeof s) {
-    s = Stats();
+  } else {
     s.status = DIED;
-    set_message(s, WIFSIGNALED(wstatus) ? "the build died (signal " + std::to_string(WTERMSIG(wstatus)) + ", e.g. out of memory)"
-                                        : std::string("the build died"));
+    set_message(s, WIFSIGNALED(child.wstatus) ? "the build died (signal " + std::to_string(WTERMSIG(child.wstatus)) + ", e.g. out of memory)"
+                                              : std::string("the build died"));
   }
   return s;
 }
@@ -501,26 +450,6 @@ struct Row
   std::string note;
   std::array<Stats, 4> cells;
 };
-
-static std::string fmt(double x, int prec = 3)
-{
-  std::ostringstream os;
-  os << std::setprecision(prec) << x;
-  return os.str();
-}
-
-static std::string fixed(double x, int prec)
-{
-  std::ostringstream os;
-  os << std::fixed << std::setprecision(prec) << x;
-  return os.str();
-}
-
-static std::string md_escape(std::string s)
-{
-  for (char& ch : s) if (ch == '|' || ch == '\n') ch = ' ';
-  return s;
-}
 
 static Row run_scene(const std::string& name, const std::string& group, const Collection& user, double cap)
 {
@@ -570,12 +499,6 @@ static Row run_scene(const std::string& name, const std::string& group, const Co
   return row;
 }
 
-static std::string ratio_text(double r)
-{
-  if (r < 0.1) return fmt(r, 2);
-  return fixed(r, r < 10 ? 2 : (r < 100 ? 1 : 0));
-}
-
 static std::string ratio(const Stats& naive, const Stats& reduced, bool terms)
 {
   if (naive.status != OK || reduced.status != OK) return "";
@@ -593,11 +516,8 @@ static void write_svg(const std::string& file, const std::vector<Row>& rows, dou
   const int width = left + std::max(int(rows.size()) * group_w, legend_w) + 30, height = top_margin + plot_h + bottom;
   auto y_of = [&](double v) { return top_margin + plot_h - plot_h * (std::log10(std::max(1.0, v)) / decades); };
   std::ofstream svg(file);
-  svg << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-      << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height << "\" viewBox=\"0 0 " << width
-      << " " << height << "\" font-family=\"sans-serif\" font-size=\"11\">\n"
-      << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
-      << "<text x=\"" << left << "\" y=\"20\" font-size=\"14\" font-weight=\"bold\">Total number of terms per system (log scale)</text>\n";
+  benchmark_common::svg_open(svg, width, height);
+  svg << "<text x=\"" << left << "\" y=\"20\" font-size=\"14\" font-weight=\"bold\">Total number of terms per system (log scale)</text>\n";
   // legend
   int lx = left;
   for (int k = 0; k < 4; ++k) {
@@ -673,8 +593,7 @@ int main(int argc, char** argv)
     for (int k = 0; k < 4; ++k) {
       const Stats& s = r.cells[std::size_t(k)];
       const bool naive = k >= 2, ok = s.status == OK;
-      std::string note = s.message;
-      for (char& ch : note) if (ch == ',' || ch == '"' || ch == '\n') ch = ';';
+      const std::string note = benchmark_common::csv_escape(s.message);
       csv << r.scene << "," << r.attempts << "," << r.user_bodies << "," << r.standard_bodies << "," << r.points << "," << r.distances << "," << r.dof << ","
           << system_keys[k] << "," << (ok ? "ok" : s.status == SKIPPED ? "skipped" : "error") << ","
           << (naive || r.exact ? "exact" : "interval") << ",";
@@ -690,25 +609,13 @@ int main(int argc, char** argv)
     }
 
   // Markdown
-  struct utsname u;
-  uname(&u);
-  std::string cpu = "unknown CPU";
-  {
-    std::ifstream in("/proc/cpuinfo");
-    std::string line;
-    while (std::getline(in, line))
-      if (line.rfind("model name", 0) == 0) { cpu = line.substr(line.find(':') + 2); break; }
-  }
-  std::string command;
-  for (int i = 0; i < argc; ++i) command += (i ? " " : "") + std::string(argv[i]);
-  std::time_t now = std::time(nullptr);
-  char date[64];
-  std::strftime(date, sizeof date, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
+  const std::string cpu = benchmark_common::cpu_model(), command = benchmark_common::command_line(argc, argv);
+  const std::string date = benchmark_common::utc_date();
 
   std::ofstream md(prefix + ".md");
   md << "# Reduced system against the naive formulations\n\n"
      << "Command: `" << command << "` (max bodies " << max_n << ", " << seeds << " seeds per size, cap " << cap << " s per system)  \n"
-     << "Machine: " << cpu << ", " << sysconf(_SC_NPROCESSORS_ONLN) << " cores online, " << u.sysname << " " << u.release
+     << "Machine: " << cpu << ", " << sysconf(_SC_NPROCESSORS_ONLN) << " cores online, " << benchmark_common::os_release()
      << "; compiler " << __VERSION__ << "; " << date << "; total run " << fixed(total.time(), 1) << " s.\n\n"
      << "Scenes: the papers' tetra, quad and pent (examples/Rigid_incidence/data), and random planted scenes "
         "`randomN-sK` of N bodies (seed K): points at integer world positions, bodies of 3-5 points sharing a pair "

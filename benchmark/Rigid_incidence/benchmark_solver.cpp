@@ -42,6 +42,8 @@
 #include <CGAL/Gmpfi.h>
 #endif
 
+#include "benchmark_common.h" // RI, K, Traits, Collection, RIGID_INCIDENCE_DATA_DIR, helpers
+
 #include <mpfr.h>
 
 #include <algorithm>
@@ -50,7 +52,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <ctime>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
@@ -67,63 +68,27 @@
 #include <signal.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
-#include <sys/utsname.h>
 #include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
 
-#ifndef RIGID_INCIDENCE_DATA_DIR
-#define RIGID_INCIDENCE_DATA_DIR "examples/Rigid_incidence/data"
-#endif
-
-namespace RI = CGAL::Rigid_incidence;
-typedef CGAL::Simple_cartesian<CGAL::Gmpq> K;
-typedef RI::Rigid_incidence_traits<K> Traits;
-typedef RI::Rigid_body_collection<Traits> Collection;
 typedef CGAL::Interval_nt<false> Dbl;
 
 static const std::size_t no_box_limit = std::size_t(1) << 40; // only the time budget stops a cell
-static const double cell_memory = double(std::size_t(8) << 30);   // the address-space limit of a cell
+static const double cell_memory = double(benchmark_common::cell_memory_bytes); // the address-space limit of a cell
 
 // ------------------------------------------------------------------ formatting
-static std::string fmt(double x, int prec = 3)
-{
-  std::ostringstream os;
-  os << std::setprecision(prec) << x;
-  return os.str();
-}
-
-static std::string fixed(double x, int prec)
-{
-  std::ostringstream os;
-  os << std::fixed << std::setprecision(prec) << x;
-  return os.str();
-}
+using benchmark_common::csv_escape;
+using benchmark_common::fixed;
+using benchmark_common::fmt;
+using benchmark_common::md_escape;
+using benchmark_common::ratio_text;
 
 static std::string seconds_text(double s)
 {
   if (s < 1e-3) return fmt(s * 1e3, 2) + " ms";
   if (s < 1) return fmt(s * 1e3, 3) + " ms";
   return fixed(s, s < 10 ? 2 : 1) + " s";
-}
-
-static std::string ratio_text(double r)
-{
-  if (!std::isfinite(r)) return "–";
-  if (r < 0.1) return fmt(r, 2);
-  return fixed(r, r < 10 ? 2 : (r < 100 ? 1 : 0));
-}
-
-static std::string md_escape(std::string s)
-{
-  for (char& ch : s) if (ch == '|' || ch == '\n') ch = ' ';
-  return s;
-}
-
-static std::string csv_escape(std::string s)
-{
-  for (char& ch : s) if (ch == ',' || ch == '"' || ch == '\n') ch = ';';
-  return s;
 }
 
 static double cpu_now()
@@ -289,71 +254,20 @@ static bool deserialize(const std::string& text, Record& r)
 template <class F>
 Record run_cell(F f, double budget, double grace = 30)
 {
-  std::cout.flush();
-  std::cerr.flush();
-  int fd[2];
+  const benchmark_common::Forked child = benchmark_common::run_forked<Record>(
+      f, [](Record& r, const std::string& m) { r.message = m; }, serialize, budget + grace);
   Record s;
-  if (pipe(fd) != 0) { s.message = "pipe() failed"; return s; }
-  pid_t pid = fork();
-  if (pid < 0) { s.message = "fork() failed"; close(fd[0]); close(fd[1]); return s; }
-  if (pid == 0) {
-    close(fd[0]);
-    struct rlimit lim;
-    lim.rlim_cur = lim.rlim_max = rlim_t(cell_memory); // 8 GiB of address space per cell
-    setrlimit(RLIMIT_AS, &lim);
-    Record r;
-    try {
-      r = f();
-    } catch (const std::bad_alloc&) {
-      r = Record();
-      r.message = "out of memory (8 GiB)";
-    } catch (const std::exception& e) {
-      r = Record();
-      r.message = e.what();
-    }
-    const std::string text = serialize(r);
-    std::size_t put = 0;
-    while (put < text.size()) {
-      ssize_t w = write(fd[1], text.data() + put, text.size() - put);
-      if (w <= 0) break;
-      put += std::size_t(w);
-    }
-    close(fd[1]);
-    _exit(0);
-  }
-  close(fd[1]);
-  CGAL::Real_timer wall;
-  wall.start();
-  std::string text;
-  char buf[65536];
-  bool timed_out = false;
-  for (;;) {
-    double left = budget + grace - wall.time();
-    if (left <= 0) { timed_out = true; break; }
-    struct pollfd p = {fd[0], POLLIN, 0};
-    int k = poll(&p, 1, int(std::ceil(left * 1000)));
-    if (k == 0) { timed_out = true; break; }
-    if (k < 0) continue;
-    ssize_t m = read(fd[0], buf, sizeof buf);
-    if (m <= 0) break;
-    text.append(buf, std::size_t(m));
-  }
-  close(fd[0]);
-  if (timed_out) kill(pid, SIGKILL);
-  int wstatus = 0;
-  waitpid(pid, &wstatus, 0);
-  const double cell_seconds = wall.time();
-  if (timed_out) {
-    s = Record();
+  if (!child.failure.empty()) { s.message = child.failure; return s; }
+  if (child.timed_out) {
     s.status = TIMEOUT;
     s.message = "killed after " + fmt(budget + grace) + " s";
-  } else if (!deserialize(text, s)) {
+  } else if (!deserialize(child.text, s)) {
     s = Record();
     s.status = DIED;
-    s.message = WIFSIGNALED(wstatus) ? "the cell died (signal " + std::to_string(WTERMSIG(wstatus)) + ")" : "the cell died";
+    s.message = WIFSIGNALED(child.wstatus) ? "the cell died (signal " + std::to_string(WTERMSIG(child.wstatus)) + ")" : "the cell died";
   }
-  s.cell_seconds = cell_seconds;
-  if (s.status == ERROR && s.message.rfind("out of memory", 0) == 0) s.message += " after " + fmt(cell_seconds, 2) + " s";
+  s.cell_seconds = child.seconds;
+  if (s.status == ERROR && s.message.rfind("out of memory", 0) == 0) s.message += " after " + fmt(child.seconds, 2) + " s";
   return s;
 }
 
@@ -853,10 +767,8 @@ static void write_svg(const std::string& file, const std::vector<Scene_rows>& sc
   auto X = [&](double a) { return left + pw * (std::log10(a) - xlo) / double(xhi - xlo); };
   auto Y = [&](double t) { return top + ph - ph * (std::log10(std::max(1e-6, t)) - ylo) / double(yhi - ylo); };
   std::ofstream svg(file);
-  svg << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-      << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height << "\" viewBox=\"0 0 " << width << " "
-      << height << "\" font-family=\"sans-serif\" font-size=\"11\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
-      << "<text x=\"" << left << "\" y=\"22\" font-size=\"14\" font-weight=\"bold\">Solver time against achieved accuracy "
+  benchmark_common::svg_open(svg, width, height);
+  svg << "<text x=\"" << left << "\" y=\"22\" font-size=\"14\" font-weight=\"bold\">Solver time against achieved accuracy "
          "(all chart combinations; log-log)</text>\n"
       << "<text x=\"" << left << "\" y=\"40\">points: tolerance 1e-3 .. 1e-12 in double (circles), 1e-20, 1e-30 at 113 bits and "
          "1e-60 at 256 bits with Gmpfi (squares); accuracy = max distance to a 512-bit reference root</text>\n";
@@ -1271,29 +1183,17 @@ int main(int argc, char** argv)
   }
 
   // ---------------------------------------------------------------- Markdown
-  struct utsname u;
-  uname(&u);
-  std::string cpu = "unknown CPU";
-  {
-    std::ifstream in("/proc/cpuinfo");
-    std::string line;
-    while (std::getline(in, line))
-      if (line.rfind("model name", 0) == 0) { cpu = line.substr(line.find(':') + 2); break; }
-  }
+  const std::string cpu = benchmark_common::cpu_model();
   double load[3] = {0, 0, 0};
   getloadavg(load, 3);
-  std::string command;
-  for (int i = 0; i < argc; ++i) command += (i ? " " : "") + std::string(argv[i]);
-  std::time_t now = std::time(nullptr);
-  char date[64];
-  std::strftime(date, sizeof date, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
+  const std::string command = benchmark_common::command_line(argc, argv), date = benchmark_common::utc_date();
 
   std::ofstream md(prefix + ".md");
   md << "# Subdivision solver: tolerance, precision, fast mode, naive formulations, PHCpack\n\n"
      << "Command: `" << command << "` (" << repeats << " repeats, budget " << cap << " s per cell, " << long_cap
      << " s for stewart_gough40)  \n"
      << "Machine: " << cpu << ", " << sysconf(_SC_NPROCESSORS_ONLN) << " cores online (load average " << fixed(load[0], 1)
-     << " at the end), " << u.sysname << " " << u.release << "; compiler " << __VERSION__ << "; MPFI " << (mpfi ? "yes" : "no")
+     << " at the end), " << benchmark_common::os_release() << "; compiler " << __VERSION__ << "; MPFI " << (mpfi ? "yes" : "no")
      << "; PHCpack: " << (have_phc ? "`" + phc + "` (" + phc_version + ")" : "not found") << "; " << date << "; total run "
      << fixed(total.time(), 1) << " s.\n\n"
      << "Scenes (examples/Rigid_incidence/data): tetra and tetra_ii (4 configurations), quad_distinct (16), pent (pent iv, 8) "

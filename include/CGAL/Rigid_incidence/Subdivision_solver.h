@@ -463,8 +463,8 @@ private:
         evaluate_d(center_d(x.lo, x.hi), f, J);
         for (std::size_t j = 0; j < n; ++j) J.col(j) *= width(x, j);
         Eigen::FullPivLU<Matrix> lu(J);
-        if (lu.isInvertible() && lu.rcond() > 1e-12) {
-          Matrix M = lu.inverse();
+        Matrix M;
+        if (lu.isInvertible() && lu.rcond() > 1e-12 && (M = lu.inverse()).allFinite()) {
           std::vector<std::vector<IT>> F;
           for (std::size_t i = 0; i < n; ++i) F.push_back(internal::embed(eq[i].shape, x.b[i], full));
           std::vector<IT> g(full.size);
