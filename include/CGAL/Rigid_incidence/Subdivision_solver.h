@@ -143,7 +143,6 @@ private:
   // One solve: the state shared by the steps.
   struct Run
   {
-    const Subdivision_solver& S;
     const Subdivision_solver_parameters& P;
     std::size_t n;
     std::vector<Equation> eq;
@@ -152,7 +151,6 @@ private:
     double min_width;
     double singular_width;
     double last_contraction = 0;          // ||I - Y J(X)|| of the last Krawczyk test
-    bool exact_coefficients;
     Shape full;                           // all variables, the highest degree of each
     bool precondition;
     std::vector<Found> found;
@@ -166,9 +164,8 @@ private:
     std::function<void(const std::vector<Bound>&, const std::vector<Bound>&, Solver_result<IT>&)> retry;
 
     template <class NT>
-    Run(const Subdivision_solver& s, const Polynomial_system<NT>& sys) : S(s), P(s.p_), n(sys.number_of_variables())
+    Run(const Subdivision_solver& s, const Polynomial_system<NT>& sys) : P(s.p_), n(sys.number_of_variables())
     {
-      exact_coefficients = std::is_same<NT, CGAL::Gmpq>::value || std::is_same<NT, double>::value;
       for (const auto& f : sys.equations) eq.push_back(make_equation(f));
       std::vector<unsigned> dmax(n, 0);
       for (const auto& e : eq)
@@ -456,7 +453,6 @@ private:
     bool reduce(Node& x, double& ratio)
     {
       std::vector<double> tu(n, 0.0), tv(n, 1.0);
-      bool done = false;
       if (precondition) {
         Vector f;
         Matrix J;
@@ -482,10 +478,8 @@ private:
               tv[j] = (std::min)(tv[j], v);
             }
           }
-          done = true;
         }
       }
-      (void)done;
       {
         // the equations themselves (the projected-polyhedron method): cheap, and on large
         // boxes often sharper than the preconditioned ones, whose linearization is poor there

@@ -3,7 +3,7 @@
 //
 // Tensor-product Bernstein arrays over the variables one equation involves, in interval
 // arithmetic: conversion from the power basis on a box, de Casteljau subdivision and
-// restriction, degree elevation, derivative enclosures and the projected control polygon.
+// restriction, degree elevation, Horner evaluation and the projected control polygon.
 // Every operation returns an enclosure of the exact array (outward rounding of the interval
 // type), so a sign of the coefficients is a sign of the polynomial over the box.
 
@@ -209,17 +209,6 @@ T horner(const Tensor_shape& s, const std::vector<T>& a, const std::vector<T>& x
   return cur.empty() ? T(0) : cur[0];
 }
 
-// Lower and upper bounds (as doubles, rounded outward) of the coefficients.
-template <class IT> void range(const std::vector<IT>& b, double& lo, double& hi)
-{
-  lo = Interval_ops<IT>::lower_double(b[0]);
-  hi = Interval_ops<IT>::upper_double(b[0]);
-  for (const IT& x : b) {
-    lo = (std::min)(lo, Interval_ops<IT>::lower_double(x));
-    hi = (std::max)(hi, Interval_ops<IT>::upper_double(x));
-  }
-}
-
 // Does the array have a strict sign (every coefficient > 0, or every one < 0)?
 template <class IT> bool strict_sign(const std::vector<IT>& b)
 {
@@ -231,25 +220,6 @@ template <class IT> bool strict_sign(const std::vector<IT>& b)
     if (!pos && !neg) return false;
   }
   return true;
-}
-
-// Enclosure, over the array's box, of the derivative along local axis j in the parameter t
-// (multiply by 1/width for the derivative in x): the hull of d (b_{i+1} - b_i).
-template <class IT> void derivative_range(const Tensor_shape& s, const std::vector<IT>& b, std::size_t j, double& lo, double& hi)
-{
-  const unsigned d = s.degrees[j];
-  lo = hi = 0;
-  if (d == 0) return;
-  bool first = true;
-  const std::size_t st = s.strides[j];
-  s.for_each_fiber(j, [&](std::size_t base) {
-    for (unsigned i = 0; i < d; ++i) {
-      IT diff = (b[base + (i + 1) * st] - b[base + i * st]) * IT(int(d));
-      double l = Interval_ops<IT>::lower_double(diff), h = Interval_ops<IT>::upper_double(diff);
-      if (first) { lo = l; hi = h; first = false; }
-      else { lo = (std::min)(lo, l); hi = (std::max)(hi, h); }
-    }
-  });
 }
 
 // Projected-polyhedron clipping along local axis j: the parameter range [tu, tv] in [0, 1]
