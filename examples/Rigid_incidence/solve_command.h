@@ -123,6 +123,12 @@ inline void write_svg(const std::string& file, const RI::Scene& scene, const RI:
 {
   std::ofstream out(file);
   if (!out) throw RI::Input_error("--svg: cannot write '" + file + "'");
+  out << std::fixed << std::setprecision(2);  // coordinates in pixels
+  auto residual_text = [](double x) {
+    std::ostringstream os;
+    os << std::setprecision(2) << x;
+    return os.str();
+  };
   const double az = 0.6, el = 0.45;  // view: azimuth and elevation in radians
   auto project = [&](const std::array<double, 3>& p) {
     double x = std::cos(az) * p[0] - std::sin(az) * p[1];
@@ -155,8 +161,8 @@ inline void write_svg(const std::string& file, const RI::Scene& scene, const RI:
     auto Y = [&](const std::array<double, 2>& p) { return oy + pad + (p[1] - lo[1]) * s; };
     out << "<g>\n<rect x=\"" << ox + 2 << "\" y=\"" << oy + 2 << "\" width=\"" << cell - 4 << "\" height=\"" << cell - 4
         << "\" fill=\"none\" stroke=\"#ccc\"/>\n<text x=\"" << ox + 8 << "\" y=\"" << oy + 14 << "\">#" << k + 1
-        << (r.configurations[k].certified ? " certified" : " not certified") << ", residual " << std::setprecision(2)
-        << r.configurations[k].max_residual << "</text>\n";
+        << (r.configurations[k].certified ? " certified" : " not certified") << ", residual " << residual_text(r.configurations[k].max_residual)
+        << "</text>\n";
     std::size_t bi = 0;
     for (const auto& b : scene.bodies) {
       const char* col = colours[bi++ % 8];

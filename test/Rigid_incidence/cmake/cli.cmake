@@ -299,7 +299,7 @@ if(TARGET rigid_incidence)
   add_test(NAME cli_solve_svg
            COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${_ri_d}/tetra.json|--svg|${CMAKE_CURRENT_BINARY_DIR}/cli_tetra.svg" -DEXPECT_RC=0
                    "-DCHECK_FILE=${CMAKE_CURRENT_BINARY_DIR}/cli_tetra.svg"
-                   "-DCHECK_FILE_REGEX=^<svg&&4 configuration\\(s\\), complete&&#4 certified&&<line&&<circle&&</svg>" -P ${_ri_cli_script})
+                   "-DCHECK_FILE_REGEX=^<svg&&4 configuration\\(s\\), complete&&#4 certified&&<line x1=\"[0-9]+\\.[0-9][0-9]\"&&<circle&&</svg>" -P ${_ri_cli_script})
   add_test(NAME cli_solve_near
            COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${_ri_d}/pent.json|--near|${CMAKE_CURRENT_LIST_DIR}/../data/pent_near.json" -DEXPECT_RC=0
                    "-DEXPECT_STDOUT=configuration 1: certified[^\n]*\n  parameters: c1.t in [^\n]* c4.t in \\[-0.5257311121, [^\n]* c2.s in \\[0.5877852523" -P ${_ri_cli_script})
