@@ -73,7 +73,7 @@ static const char* usage_text =
   "            when there is none. --tolerance EPS (default 1e-12): width of the parameter\n"
   "            enclosures; --precision BITS (default 53: double intervals; more: MPFI);\n"
   "            --fast: double precision, Newton polish, nothing certified; --max-boxes N per\n"
-  "            chart combination (default 20000); --svg FILE: the configurations side by\n"
+  "            chart combination (default 200000); --svg FILE: the configurations side by\n"
   "            side as line drawings; --near CONFIG.json: order the configurations by their\n"
   "            distance to a given one ({\"points\": {label: [x, y, z]}} or a solve --json\n"
   "            output). --json: {scene, analysis, reduced_system {variables, equations},\n"

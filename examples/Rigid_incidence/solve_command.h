@@ -200,7 +200,6 @@ RI::Scene_solve_result run(const RI::Rigid_body_collection<Traits>& input, const
   p.solver.precision = o.precision;
   p.solver.fast = o.fast;
   if (o.max_boxes) p.solver.maximal_boxes = o.max_boxes;
-  else p.solver.maximal_boxes = 20000;
   return RI::solve_scene<IT, NT>(input, c, t, s, p);
 }
 

@@ -592,7 +592,12 @@ static Scene_result check_planted(const Plant& P, const std::string& what, Plant
       if (qc[0] == 0) { ++st.free_half;  }
       for (const Q& x : rv) if (abs_q(x) == 1) { ++st.free_border;  break; }
       if (qc[0] != 0 && abs_q(qc[0] / qc[std::size_t(chart)]) <= Q(1, 50)) { ++st.free_near_half;  }
-      if (e.shared.empty()) { tv = {Trel.x, Trel.y, Trel.z}; ++st.translations; }
+      if (e.shared.empty()) { // T: where the pivot lands in the parent's frame
+        const auto& sp = p0.pivot(k);
+        const QP Tp = Trel + mapply(Rrel, QP{sp[0], sp[1], sp[2]});
+        tv = {Tp.x, Tp.y, Tp.z};
+        ++st.translations;
+      }
       // stereographic: q ~ (1 - |t|^2, 2 t), so t = v / (|q| + q0) with q0 >= 0
       Q N;
       if (exact_sqrt(norm2(qrel), N)) {
@@ -1135,8 +1140,8 @@ static void check_quad_r0()
 }
 
 // ------------------------------------------------------------------ the translation bound
-// box() claims every translation lies in [-B, B], with B from the covering bodies and the
-// scene's distances. Two small triangles X and Y, 1000 apart, each corner of X joined to a
+// box() claims every translation (where the child's pivot lands in the parent's frame) lies
+// within reach() of the parent's anchor point: the shortest chain of known lengths. Two small triangles X and Y, 1000 apart, each corner of X joined to a
 // corner of Y by a long body N1, N2, N3 (a third, private point each): the covering set
 // {X, Y} (weight 6, depth sum 1) beats {X, N1, Y} (weight 3 + 3, depth sum 2), and the
 // translation between X and Y crosses the gap through bodies outside the covering set.
@@ -1169,10 +1174,13 @@ static void check_translation_bound_through_outside_body()
   for (std::size_t k = 0; k < par.edges().size(); ++k) {
     const auto& e = par.edges()[k];
     if (!e.shared.empty()) continue;
-    // the true translation: the child's origin in the parent's frame (all frames are the world
+    // the true translation: the pivot's place in the parent's frame (all frames are the world
     // frame shifted: Y's origin at y0, the others at 0)
     auto origin = [&](const std::string& b) { return b == "Y" ? y0 : QP{Q(0), Q(0), Q(0)}; };
-    const QP T = origin(c.body(e.child).name) - origin(c.body(e.parent).name);
+    const QP T = s.at(c.label(e.pivot)) - origin(c.body(e.parent).name);
+    // the chain X -> N_i -> Y is about 1000 long; nothing shorter links X and Y
+    const double r = par.reach(e.anchor, e.pivot);
+    CHECK(r >= 999 && r <= 1010, "translation bound: reach " << r << " from " << c.label(e.anchor) << " to " << c.label(e.pivot));
     std::cout << "  edge '" << c.body(e.parent).name << "' -> '" << c.body(e.child).name << "': true T = (" << T.x << ", " << T.y << ", "
               << T.z << "), box [" << par.box()[e.translation[0]].first << ", " << par.box()[e.translation[0]].second << "]\n";
     for (int i = 0; i < 3; ++i) {
@@ -1212,13 +1220,27 @@ static void check_point_at_frame_origin()
   CHECK(r.number_of_variables() == 6 && r.number_of_equations() == 3, "origin scene: " << r.number_of_variables() << " variables, "
                                                                                       << r.number_of_equations() << " equations");
   for (const auto& eq : r.equations()) {
-    if (eq.label.find("a-d") == std::string::npos) continue;
+    if (eq.label.rfind("distance a-d", 0) != 0) continue;  // not the others, linearized with it
     std::string rot;
     for (std::size_t v : eq.variables)
       if (r.parametrization().variable_names()[v].find(".q") != std::string::npos) rot += " " + r.parametrization().variable_names()[v];
     CHECK(rot.empty() && eq.total_degree == 2, "origin scene: " << eq.label << " (between the frames' origins) carries the rotation"
                                                                 << rot << ", total degree " << eq.total_degree << " instead of 2");
   }
+  // a-d is the shortest link: d is the pivot, a the anchor, the translation's box a +- |a - d|,
+  // and the two other distances, minus D times the sphere |T - a|^2 = |a - d|^2, are linear in T
+  const auto& par = r.parametrization();
+  const auto& e = par.edges().at(0);
+  CHECK(c.label(e.pivot) == (c.body(e.child).name == "Y" ? "d" : "a") && c.label(e.anchor) == (c.body(e.child).name == "Y" ? "a" : "d"),
+        "origin scene: pivot " << c.label(e.pivot) << ", anchor " << c.label(e.anchor));
+  CHECK(std::abs(par.reach(e.anchor, e.pivot) - std::sqrt(27.0)) < 1e-12, "origin scene: reach " << par.reach(e.anchor, e.pivot));
+  int linear = 0;
+  for (const auto& eq : r.equations()) {
+    unsigned dt = 0;
+    for (std::size_t v : e.translation) dt = (std::max)(dt, eq.polynomial.degree(v));
+    linear += dt == 1;
+  }
+  CHECK(linear == 2, "origin scene: " << linear << " equations linear in the translation, expected 2");
 }
 
 int main()

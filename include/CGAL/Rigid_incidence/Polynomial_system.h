@@ -45,6 +45,18 @@ template <class NT> bool certainly_zero(const NT& x)
     return x == NT(0);
   }
 }
+// Two coefficients certainly equal: exact equality, or the same degenerate interval [x, x].
+template <class NT> bool certainly_same(const NT& x, const NT& y)
+{
+  typedef CGAL::Interval_traits<NT> IT;
+  if constexpr (std::is_same<typename IT::Is_interval, CGAL::Tag_true>::value) {
+    typename IT::Lower lower;
+    typename IT::Upper upper;
+    return lower(x) == upper(x) && lower(y) == upper(y) && lower(x) == lower(y);
+  } else {
+    return x == y;
+  }
+}
 } // namespace internal
 
 /*!

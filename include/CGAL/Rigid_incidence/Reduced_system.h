@@ -16,6 +16,7 @@
 #include <CGAL/Rigid_incidence/rigidity_matroid.h>
 #include <CGAL/Rigid_incidence/well_formed_incidences.h>
 
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -94,6 +95,7 @@ public:
       if (ks[i].origin == Constraint::TREE_INCIDENCE) continue;
       equations_.push_back(make_equation(ks[i]));
     }
+    linearize_translations();
     std::vector<bool> covered(c.number_of_points(), false);
     for (std::size_t b : tree.covering_set) for (std::size_t q : c.body(b).points) covered[q] = true;
     for (std::size_t b : tree.non_covering) {
@@ -225,6 +227,91 @@ private:
         }
       }
     return best;
+  }
+
+  // A translation T (edge sharing nothing) enters a distance from its child as
+  // c(x) |T|^2 + (terms of degree <= 1 in T), with c = D_e (or 1 for the pivot's own
+  // distance, a sphere k |T|^2 + ...). Subtracting c / k times the sphere leaves every other
+  // such equation linear in T (as the legs of a Stewart-Gough platform are written after
+  // subtracting the first leg): the same solutions, lower degree, and the solver's clipping
+  // then cuts T down to what the rotation box allows.
+  void linearize_translations()
+  {
+    typedef typename Polynomial::Exponent Exponent;
+    for (const auto& edge : p_->edges()) {
+      if (edge.translation.size() != 3) continue;
+      const std::vector<std::size_t>& T = edge.translation;
+      auto t_degree = [&](const Exponent& e) { return e[T[0]] + e[T[1]] + e[T[2]]; };
+      auto square_of = [&](const Exponent& e) -> int { // the index i if the T-part of e is T_i^2
+        for (int i = 0; i < 3; ++i) if (e[T[std::size_t(i)]] == 2) return i;
+        return -1;
+      };
+      // the part of p multiplying T_i^2, as a polynomial in the other variables; false if p has
+      // a term of degree > 2 in T, or a product T_i T_j
+      auto split = [&](const Polynomial& p, std::array<Polynomial, 3>& sq) {
+        for (auto& q : sq) q = Polynomial(p.number_of_variables());
+        for (const auto& t : p.terms()) {
+          const unsigned d = t_degree(t.first);
+          if (d > 2) return false;
+          if (d < 2) continue;
+          const int i = square_of(t.first);
+          if (i < 0) return false;
+          Exponent e = t.first;
+          e[T[std::size_t(i)]] = 0;
+          sq[std::size_t(i)].add_term(e, t.second);
+        }
+        return true;
+      };
+      // the same coefficients (interval coefficients: the same bounds; the three squares come
+      // from one computation, and soundness does not depend on it: p - mu S is a valid
+      // replacement for any mu, this only decides whether it is worth it)
+      auto same = [](const Polynomial& a, const Polynomial& b) {
+        if (a.terms().size() != b.terms().size()) return false;
+        for (auto i = a.terms().begin(), j = b.terms().begin(); i != a.terms().end(); ++i, ++j)
+          if (i->first != j->first || !same_bounds(i->second, j->second)) return false;
+        return true;
+      };
+      // the sphere: T only, k (T_x^2 + T_y^2 + T_z^2) + lower terms, k a number known exactly
+      std::size_t sphere = equations_.size();
+      NT k(0);
+      for (std::size_t i = 0; i < equations_.size() && sphere == equations_.size(); ++i) {
+        const Polynomial& p = equations_[i].polynomial;
+        bool only_t = !p.is_zero();
+        for (std::size_t v : equations_[i].variables) only_t = only_t && (v == T[0] || v == T[1] || v == T[2]);
+        std::array<Polynomial, 3> sq;
+        if (!only_t || !split(p, sq) || sq[0].terms().size() != 1 || !same(sq[0], sq[1]) || !same(sq[0], sq[2])) continue;
+        k = sq[0].terms().begin()->second;
+        if (internal::certainly_same(k, k) && !internal::certainly_zero(k)) sphere = i;  // k known exactly
+      }
+      if (sphere == equations_.size()) continue;
+      const Polynomial& S = equations_[sphere].polynomial;
+      for (std::size_t i = 0; i < equations_.size(); ++i) {
+        if (i == sphere) continue;
+        const Polynomial& p = equations_[i].polynomial;
+        std::array<Polynomial, 3> sq;
+        if (!split(p, sq) || sq[0].is_zero() || !same(sq[0], sq[1]) || !same(sq[0], sq[2])) continue;
+        // p - (c / k) S: its T^2 terms cancel (exactly with exact coefficients; with interval
+        // coefficients to enclosures of 0, kept: the result encloses the exact p - (c / k) S)
+        Polynomial mu(p.number_of_variables());
+        for (const auto& ct : sq[0].terms()) mu.add_term(ct.first, ct.second / k);
+        Polynomial r = p - mu * S;
+        Reduced_equation<NT> e = finish(equations_[i].origin, std::move(r), equations_[i].frame);
+        e.label = equations_[i].label + ", minus " + (sq[0].terms().size() == 1 && sq[0].total_degree() == 0 ? "a multiple" : "D") +
+                  " x (" + equations_[sphere].label + "): linear in " + p_->variable_names()[T[0]].substr(0, p_->variable_names()[T[0]].size() - 1);
+        equations_[i] = std::move(e);
+      }
+    }
+  }
+
+  static bool same_bounds(const NT& a, const NT& b)
+  {
+    if constexpr (internal::Coefficient_ops<NT>::is_interval) {
+      typename CGAL::Interval_traits<NT>::Lower lower;
+      typename CGAL::Interval_traits<NT>::Upper upper;
+      return lower(a) == lower(b) && upper(a) == upper(b);
+    } else {
+      return a == b;
+    }
   }
 
   const Rigid_body_collection<Traits>& c_;

@@ -68,6 +68,12 @@ struct Subdivision_solver_parameters
   double reduction_ratio = 0.7;
   /// How to choose the variable to split.
   Split_strategy split = Split_strategy::LARGEST_WIDTH;
+  /// Stop once the unknown boxes show a curve of solutions (a chain of at least this many
+  /// touching rank-deficient boxes spanning 100 singular widths): the rest is `PENDING` with
+  /// reason "stopped: positive-dimensional solution set", and the result's diagnosis says
+  /// so. Subdividing along a curve would otherwise spend the whole box budget at the
+  /// singular width. 0: never stop.
+  std::size_t positive_dimensional_evidence = 256;
 };
 
 /// \ingroup PkgRigidIncidenceSolver
@@ -104,7 +110,7 @@ struct Solver_unresolved
 {
   Box_class kind = Box_class::UNKNOWN; ///< `UNKNOWN` or `PENDING`
   /// why: "possible multiple root", "precision exhausted", "not certified at minimal width",
-  /// "box budget exhausted", "time budget exhausted"
+  /// "box budget exhausted", "time budget exhausted", "stopped: positive-dimensional solution set"
   std::string reason;
   std::vector<IT> box;             ///< per variable, the hull of the cluster's boxes
   std::size_t boxes = 1;           ///< how many boxes the cluster merges

@@ -159,6 +159,7 @@ private:
     std::vector<char> unknown_rank_deficient;
     std::vector<Node> pending_nodes;
     std::string pending_reason;
+    std::size_t next_curve_check = 16;  // unknown boxes before the next look for a curve
     Solver_result<IT> result;
     std::chrono::steady_clock::time_point start;
     std::function<void(const std::vector<Bound>&, const std::vector<Bound>&, Solver_result<IT>&)> retry;
@@ -341,6 +342,14 @@ private:
         ++result.statistics.boxes;
         result.statistics.maximal_depth = (std::max)(result.statistics.maximal_depth, x.depth);
         process(x, stack);
+        if (P.positive_dimensional_evidence > 0 && unknown_nodes.size() >= next_curve_check) {
+          next_curve_check *= 2;
+          if (!curve_evidence().empty()) {
+            pending_reason = "stopped: positive-dimensional solution set";
+            for (auto& y : stack) pending_nodes.push_back(std::move(y));
+            stack.clear();
+          }
+        }
       }
       finish();
     }
@@ -403,15 +412,13 @@ private:
       }
       if (converging || rel <= 1.0 / 16 || small) {
         last_contraction = 0;
-        if (P.fast ? polish(x) : certify(x)) return;
+        bool below = true;
+        for (std::size_t j = 0; j < n && below; ++j) below = width(x, j) <= singular_width;
+        if (P.fast ? polish(x) : certify(x, !small && !below)) return;
         // a box this small on which the Jacobian may be singular (the Krawczyk operator does
         // not contract): a multiple root, or a point of a solution curve; deeper subdivision
         // would only multiply the boxes
-        if (!P.fast && last_contraction >= 1) {
-          bool below = true;
-          for (std::size_t j = 0; j < n && below; ++j) below = width(x, j) <= singular_width;
-          if (below) { make_unknown(x, small, true); return; }
-        }
+        if (!P.fast && last_contraction >= 1 && below) { make_unknown(x, small, true); return; }
       }
       // the variable to split
       std::size_t best = n;
@@ -607,7 +614,10 @@ private:
     // Tries to prove one root near the box (in the box inflated by 10% each side); on
     // success records it (tightened, merged with a duplicate) and returns true: the box then
     // holds no other root.
-    bool certify(Node& x)
+    // With `newton_gate`, gives up before the (costly) Krawczyk test when quasi-Newton from
+    // the centre leaves the node: the test would fail (K holds the Newton step), and the
+    // halves get their own chance; on the 6-variable Stewart-Gough system this halves the time.
+    bool certify(Node& x, bool newton_gate = false)
     {
       // The Krawczyk box: centred at a Newton estimate of the root (so that a root near a
       // face of the node, or on it, sits near the centre), covering the node with a margin of
@@ -627,7 +637,7 @@ private:
         margin[j] = width_interval(x.lo[j], x.hi[j]) * IT(0.1) + IT(floor);
         c[j] = midpoint_or_point(x.lo[j], x.hi[j]);
       }
-      newton_point(x.lo, x.hi, margin, c);
+      if (!newton_point(x.lo, x.hi, margin, c) && newton_gate) return false;
       for (std::size_t j = 0; j < n; ++j) {
         IT a = pt(c[j]) - pt(x.lo[j]), b = pt(x.hi[j]) - pt(c[j]);
         IT r = (O::upper(a) < O::upper(b) ? b : a) * IT(1.1) + margin[j];
@@ -668,8 +678,8 @@ private:
 
     // A few quasi-Newton steps x <- x - Y f(x) in the working precision (Y: the inverse
     // Jacobian at the start, in double); x is left unchanged if they leave the node widened
-    // by `margin`.
-    void newton_point(const std::vector<Bound>& nlo, const std::vector<Bound>& nhi, const std::vector<IT>& margin, std::vector<Bound>& x)
+    // by `margin` (and false is returned).
+    bool newton_point(const std::vector<Bound>& nlo, const std::vector<Bound>& nhi, const std::vector<IT>& margin, std::vector<Bound>& x)
     {
       std::vector<double> xd(n);
       for (std::size_t j = 0; j < n; ++j) xd[j] = O::to_double(x[j]);
@@ -677,9 +687,9 @@ private:
       Matrix J;
       evaluate_d(xd, f, J);
       Eigen::FullPivLU<Matrix> lu(J);
-      if (!lu.isInvertible()) return;
+      if (!lu.isInvertible()) return true;
       Matrix Y = lu.inverse();
-      if (!Y.allFinite()) return;
+      if (!Y.allFinite()) return true;
       std::vector<Bound> y = x;
       std::vector<IT> yi(n), fy(n);
       for (int it = 0; it < 6; ++it) {
@@ -694,10 +704,11 @@ private:
           for (std::size_t i = 0; i < n; ++i) if (Y(j, i) != 0) step = step + IT(Y(j, i)) * fy[i];
           IT z = yi[j] - step;
           y[j] = midpoint_or_point(O::lower(z), O::upper(z));
-          if (O::lower(pt(y[j]) + margin[j]) < nlo[j] || nhi[j] < O::upper(pt(y[j]) - margin[j])) return;
+          if (O::lower(pt(y[j]) + margin[j]) < nlo[j] || nhi[j] < O::upper(pt(y[j]) - margin[j])) return false;
         }
       }
       x = y;
+      return true;
     }
 
     double max_width(const std::vector<Bound>& lo, const std::vector<Bound>& hi) const
@@ -881,15 +892,31 @@ private:
       });
       // diagnosis: a long chain of rank-deficient unknown boxes is a curve of solutions
       for (const auto& u : result.unresolved) {
-        if (u.kind != Box_class::UNKNOWN || !u.rank_deficient || u.boxes < 16) continue;
-        double span = 0;
-        for (const auto& v : u.box) span = (std::max)(span, O::upper_double(v) - O::lower_double(v));
-        if (span < 100 * singular_width) continue;
-        result.diagnosis = "positive_dimensional: solution set appears to be positive-dimensional: Jacobian rank-deficient along a chain of " +
-                           std::to_string(u.boxes) + " boxes spanning " + std::to_string(span);
-        break;
+        std::string d = curve_diagnosis(u, 16);
+        if (!d.empty()) { result.diagnosis = d; break; }
       }
       result.statistics.seconds = seconds();
+    }
+
+    // "positive_dimensional: ..." if `u` is a chain of at least `least` rank-deficient unknown
+    // boxes spanning at least 100 singular widths, else empty.
+    std::string curve_diagnosis(const Solver_unresolved<IT>& u, std::size_t least) const
+    {
+      if (u.kind != Box_class::UNKNOWN || !u.rank_deficient || u.boxes < least) return {};
+      double span = 0;
+      for (const auto& v : u.box) span = (std::max)(span, O::upper_double(v) - O::lower_double(v));
+      if (span < 100 * singular_width) return {};
+      return "positive_dimensional: solution set appears to be positive-dimensional: Jacobian rank-deficient along a chain of " +
+             std::to_string(u.boxes) + " boxes spanning " + std::to_string(span);
+    }
+    // The diagnosis of the unknown boxes so far, with the evidence the parameters ask for.
+    std::string curve_evidence()
+    {
+      for (const auto& u : cluster(unknown_nodes, Box_class::UNKNOWN)) {
+        std::string d = curve_diagnosis(u, P.positive_dimensional_evidence);
+        if (!d.empty()) return d;
+      }
+      return {};
     }
 
     // Touching boxes of one class become one unresolved region.

@@ -16,8 +16,12 @@
 #include <CGAL/Rigid_incidence/enclose_coordinates.h>
 #include <CGAL/Rigid_incidence/optimal_incidence_tree.h>
 
+#include <boost/graph/adjacency_list.hpp>
+#include <boost/graph/dijkstra_shortest_paths.hpp>
+
 #include <array>
 #include <cmath>
+#include <optional>
 #include <limits>
 #include <map>
 #include <string>
@@ -79,6 +83,8 @@ struct Edge_parameters
   int number_of_charts = 1;               ///< 2 for a shared pair, 4 for a free rotation (1 stereographic)
   std::vector<std::size_t> rotation;      ///< variable indices of the rotation (1 or 3)
   std::vector<std::size_t> translation;   ///< variable indices of the translation (3 for an edge sharing nothing)
+  std::size_t pivot = std::size_t(-1);    ///< the child point the rotation turns about (global index): a shared point, or for an edge sharing nothing the one nearest the parent
+  std::size_t anchor = std::size_t(-1);   ///< edge sharing nothing: the parent point nearest to the pivot (global index)
 };
 
 /*!
@@ -101,8 +107,14 @@ M(q) is the usual quadratic form (R(q) |q|^2) and D(q) = |q|^2.
 - Shared point v (k = 1, three parameters): chart j has q_j = 1 and the other three
   components in [-1, 1]; every rotation has a largest component, so the 4 charts reach all
   of them; D = |q|^2 >= 1. o = v_p, s = v_c.
-- Nothing shared (k = 0, six parameters): a free rotation as above and a translation T,
-  o = T, s = 0, each coordinate of T in [-B, B] with B the bound of `translation_bound()`.
+- Nothing shared (k = 0, six parameters): a free rotation as above about a pivot point s of
+  the child, and the translation T = o, where s lands in the parent's frame. The pivot is the
+  child point with the shortest chain of known lengths to a point a of the parent (its
+  anchor, `reach()`), so T lies in the ball of radius r = reach(a, s) around a, and each
+  coordinate of T in a +- r: for a Stewart-Gough platform, a leg's length around its base
+  point (the whole scene's diameter, the bound before, made the box 13 times wider there and
+  the platform's 40 assembly modes out of the solver's reach). A free point's coordinates
+  lie likewise in a ball around the root point nearest to it.
 With `Rotation_form::STEREOGRAPHIC`, a free rotation is the papers' q = (1 - |t|^2, 2 t) /
 (1 + |t|^2) (degree 4 over 4, t unbounded) and a hinge the single chart a = 1, b = t with t
 unbounded.
@@ -173,6 +185,7 @@ public:
         if (e.shared.empty())
           for (const char* x : {".Tx", ".Ty", ".Tz"}) e.translation.push_back(new_variable(who + x, false, true));
       }
+      if (!e.shared.empty()) e.pivot = e.shared[0];
       edge_of_child_[te.child] = k;
       edges_.push_back(e);
     }
@@ -182,8 +195,34 @@ public:
       free_variable_[p] = names_.size();
       for (const char* x : {".x", ".y", ".z"}) new_variable(c.label(p) + x, false, true);
     }
-    const double B = translation_bound();
-    for (auto& b : box_) if (b.first == -kTranslation) b = {-B, B};
+    // boxes of the translations and free points: a ball around a parent (root) point
+    build_link_graph();
+    for (std::size_t k = 0; k < edges_.size(); ++k) {
+      Edge_parameters& e = edges_[k];
+      if (!e.shared.empty()) continue;
+      const auto& child = c.body(e.child);
+      const auto& parent = c.body(e.parent);
+      std::size_t best_s = 0, best_a = 0;
+      double best = std::numeric_limits<double>::infinity();
+      for (std::size_t i = 0; i < child.points.size(); ++i)
+        for (std::size_t j = 0; j < parent.points.size(); ++j) {
+          double r = reach(parent.points[j], child.points[i]);
+          if (r < best) { best = r; best_s = i; best_a = j; }
+        }
+      e.pivot = child.points[best_s];
+      e.anchor = parent.points[best_a];
+      set_ball(e.translation, coordinates_[e.parent][best_a], best);
+    }
+    for (std::size_t p : c.free_points()) {
+      const auto& root = c.body(tree.root);
+      std::size_t best_a = 0;
+      double best = std::numeric_limits<double>::infinity();
+      for (std::size_t j = 0; j < root.points.size(); ++j) {
+        double r = reach(root.points[j], p);
+        if (r < best) { best = r; best_a = j; }
+      }
+      set_ball({free_variable_[p], free_variable_[p] + 1, free_variable_[p] + 2}, coordinates_[tree.root][best_a], best);
+    }
     // the maps
     const NT I[9] = {NT(1), NT(0), NT(0), NT(0), NT(1), NT(0), NT(0), NT(0), NT(1)};
     A_.assign(edges_.size(), {I[0], I[1], I[2], I[3], I[4], I[5], I[6], I[7], I[8]});
@@ -218,53 +257,17 @@ public:
   /// The coordinates the parametrization uses for body `b` of the covering set, per local point.
   const std::vector<Point>& coordinates(std::size_t b) const { return coordinates_[b]; }
 
-  /// The bound B on each coordinate of a translation or a free point: the largest distance
-  /// from a covering body's frame origin to its points, twice over, plus a bound on the
-  /// diameter of the assembled scene (the sum of the diameters of ALL bodies and of the
-  /// lengths of the distances: the scene is connected, so any two of its points are joined by
-  /// a chain through bodies and distances that uses each at most once). A translation takes a
-  /// point x of the child to its place in the parent's frame, at most
-  /// |x| + diameter + (the parent's largest |point|) from the parent's origin: B bounds that.
-  double translation_bound() const
+  /*!
+  \brief An upper bound on the distance between the points `p` and `q` (global indices) in
+  every configuration of the scene: the shortest chain from `p` to `q` whose links are the
+  scene's distances and the pairs of points of one body (Dijkstra's algorithm, Boost.Graph),
+  each link's length rounded up. It bounds the translations and free points (their boxes).
+  */
+  double reach(std::size_t p, std::size_t q) const
   {
-    double diameter = 0, largest = 0;
-    for (std::size_t b : tree_.covering_set) {
-      double r = 0;
-      for (const Point& p : coordinates_[b]) {
-        double n = 0;
-        for (const NT& x : p) { double m = internal::Coefficient_ops<NT>::magnitude(x); n += m * m; }
-        r = (std::max)(r, std::sqrt(n));
-      }
-      largest = (std::max)(largest, r);
-    }
-    for (std::size_t b = 0; b < c_.number_of_bodies(); ++b) { // a body's diameter: its longest known distance
-      const auto& body = c_.body(b);
-      double d2 = 0;
-      for (std::size_t i = 0; i < body.points.size(); ++i)
-        for (std::size_t j = i + 1; j < body.points.size(); ++j) {
-          auto sq = body.squared(i, j);
-          if (sq) d2 = (std::max)(d2, std::abs(CGAL::to_interval(*sq).second));
-          else d2 = std::numeric_limits<double>::infinity(); // not known: bound it from a placement
-        }
-      if (!std::isfinite(d2)) {
-        CGAL::Protect_FPU_rounding<true> guard;
-        Body_enclosure<CGAL::Interval_nt<false>> e = enclose_coordinates<CGAL::Interval_nt<false>>(c_, b, 0);
-        if (!e.consistent) throw Input_error("body '" + body.name + "': its distances admit no placement");
-        d2 = 0;
-        for (std::size_t i = 0; i < body.points.size(); ++i)
-          for (std::size_t j = i + 1; j < body.points.size(); ++j) {
-            CGAL::Interval_nt<false> s(0);
-            for (int k = 0; k < 3; ++k) s += CGAL::square(e.coordinates[i][std::size_t(k)] - e.coordinates[j][std::size_t(k)]);
-            d2 = (std::max)(d2, s.sup());
-          }
-      }
-      diameter += std::sqrt(d2);
-    }
-    for (const auto& d : c_.distances()) {
-      std::pair<double, double> i = CGAL::to_interval(d.squared);
-      diameter += std::sqrt(std::abs(i.second));
-    }
-    return (2 * largest + diameter) * (1 + 1e-9) + 1;
+    auto it = reach_.find(p);
+    if (it == reach_.end()) it = reach_.emplace(p, shortest_chains(p)).first;
+    return it->second[q];
   }
 
   /// A rigid motion x -> R x + T (R row-major).
@@ -365,15 +368,15 @@ public:
   Rational squared_distance(std::size_t a, const Point& ya, std::size_t b, const Point& yb) const
   {
     Guard guard;
-    return sqdist(Side{a, ya, npos}, Side{b, yb, npos});
+    return sqdist(Side{a, ya, npos, npos}, Side{b, yb, npos, npos});
   }
   /// The squared distance between point `p` of body `a` (or a free point: `a` = npos) and
   /// point `q` of body `b` (or a free point).
   Rational squared_distance_of_points(std::size_t a, std::size_t p, std::size_t b, std::size_t q) const
   {
     Guard guard;
-    Side sa{a, a == npos ? Point() : local_point(a, p), a == npos ? p : npos};
-    Side sb{b, b == npos ? Point() : local_point(b, q), b == npos ? q : npos};
+    Side sa{a, a == npos ? Point() : local_point(a, p), a == npos ? p : npos, p};
+    Side sb{b, b == npos ? Point() : local_point(b, q), b == npos ? q : npos, q};
     return sqdist(sa, sb);
   }
 
@@ -411,6 +414,8 @@ private:
     std::size_t body;  // npos for a free point
     Point y;           // local coordinates in the body
     std::size_t free;  // the free point, or npos
+    std::size_t point; // the global point at y, or npos: a point at an edge's pivot is there
+                       // exactly, even when interval coordinates cannot show it
   };
 
   std::size_t new_variable(const std::string& name, bool unbounded, bool translation = false)
@@ -569,8 +574,9 @@ private:
         const Point vp = local_point(e.parent, e.shared[0]);
         for (int i = 0; i < 3; ++i) o[std::size_t(i)] = cst(vp[std::size_t(i)]);
         s = local_point(e.child, e.shared[0]);
-      } else {
+      } else { // T is where the pivot lands in the parent's frame
         for (int i = 0; i < 3; ++i) o[std::size_t(i)] = var(e.translation[std::size_t(i)]);
+        s = local_point(e.child, e.pivot);
       }
     }
     M_.push_back(M);
@@ -606,17 +612,6 @@ private:
     auto d = common(a, b);
     return Rational{lift(a, d).num + lift(b, d).num, d};
   }
-  // Two numbers certainly equal: exact equality, or the same degenerate interval [x, x].
-  static bool certainly_equal(const NT& x, const NT& y)
-  {
-    if constexpr (internal::Coefficient_ops<NT>::is_interval) {
-      typename CGAL::Interval_traits<NT>::Lower lower;
-      typename CGAL::Interval_traits<NT>::Upper upper;
-      return lower(x) == upper(x) && lower(y) == upper(y) && lower(x) == lower(y);
-    } else {
-      return x == y;
-    }
-  }
   // A constant polynomial's value, if the polynomial is constant.
   static bool constant_value(const Rational& r, NT& v)
   {
@@ -631,7 +626,7 @@ private:
   Rational sub(const Rational& a, const Rational& b) const
   {
     NT va, vb;
-    if (constant_value(a, va) && constant_value(b, vb) && certainly_equal(va, vb)) return Rational{Polynomial(names_.size()), {}};
+    if (constant_value(a, va) && constant_value(b, vb) && internal::certainly_same(va, vb)) return Rational{Polynomial(names_.size()), {}};
     if (b.num.is_zero()) return a;
     if (a.num.is_zero()) return scale(NT(-1), b);
     auto d = common(a, b);
@@ -701,16 +696,19 @@ private:
     while (parent_of(top) != L) top = parent_of(top);
     const std::size_t k = edge_of_child_[top];
     std::array<Rational, 3> Y = position(s.body, s.y, top), Z;
-    for (int i = 0; i < 3; ++i) Z[std::size_t(i)] = sub(Y[std::size_t(i)], constant(s_[k][std::size_t(i)]));
+    const bool at_pivot = s.body == top && s.point != npos && s.point == edges_[k].pivot;
+    for (int i = 0; i < 3; ++i)
+      Z[std::size_t(i)] = at_pivot ? Rational{Polynomial(names_.size()), {}} : sub(Y[std::size_t(i)], constant(s_[k][std::size_t(i)]));
     for (int i = 0; i < 3; ++i) r.o[std::size_t(i)] = poly(o_[k][std::size_t(i)]);
     r.rotated = true;
     r.RZ = rotate(k, Z);
-    r.ZZ = sqdist(s, Side{top, s_[k], npos}); // |Y - s|^2 one level down
+    r.ZZ = sqdist(s, Side{top, s_[k], npos, edges_[k].pivot}); // |Y - s|^2 one level down
     return r;
   }
   Rational sqdist(const Side& a, const Side& b) const
   {
     if (a.body != npos && a.body == b.body) {
+      if (a.point != npos && a.point == b.point) return Rational{Polynomial(names_.size()), {}};
       NT s(0);
       for (int i = 0; i < 3; ++i) s = s + (a.y[std::size_t(i)] - b.y[std::size_t(i)]) * (a.y[std::size_t(i)] - b.y[std::size_t(i)]);
       return constant(s);
@@ -727,6 +725,54 @@ private:
     return r;
   }
 
+  // The graph of links for reach(): one vertex per point; an edge per distance and per pair
+  // of points of a body, weighted by an upper bound on its length.
+  typedef boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS, boost::no_property,
+                                boost::property<boost::edge_weight_t, double>> Link_graph;
+  void build_link_graph()
+  {
+    links_ = Link_graph(c_.number_of_points());
+    auto up_sqrt = [](double x) { return std::nextafter(std::sqrt((std::max)(x, 0.0)), std::numeric_limits<double>::infinity()); };
+    for (const auto& d : c_.distances()) boost::add_edge(d.a, d.b, up_sqrt(CGAL::to_interval(d.squared).second), links_);
+    for (std::size_t b = 0; b < c_.number_of_bodies(); ++b) {
+      const auto& body = c_.body(b);
+      std::optional<Body_enclosure<CGAL::Interval_nt<false>>> enc; // for pairs the body does not know exactly
+      for (std::size_t i = 0; i < body.points.size(); ++i)
+        for (std::size_t j = i + 1; j < body.points.size(); ++j) {
+          double d2;
+          if (auto sq = body.squared(i, j)) d2 = CGAL::to_interval(*sq).second;
+          else {
+            CGAL::Protect_FPU_rounding<true> guard;
+            if (!enc) {
+              enc = enclose_coordinates<CGAL::Interval_nt<false>>(c_, b, 0);
+              if (!enc->consistent) throw Input_error("body '" + body.name + "': its distances admit no placement");
+            }
+            CGAL::Interval_nt<false> s(0);
+            for (int k = 0; k < 3; ++k) s += CGAL::square(enc->coordinates[i][std::size_t(k)] - enc->coordinates[j][std::size_t(k)]);
+            d2 = s.sup();
+          }
+          boost::add_edge(body.points[i], body.points[j], up_sqrt(d2), links_);
+        }
+    }
+  }
+  std::vector<double> shortest_chains(std::size_t p) const
+  {
+    std::vector<double> d(boost::num_vertices(links_), std::numeric_limits<double>::infinity());
+    boost::dijkstra_shortest_paths(links_, p, boost::distance_map(boost::make_iterator_property_map(d.begin(), boost::get(boost::vertex_index, links_))));
+    return d;
+  }
+  // The box of three variables (x, y, z of one point) for a ball of radius r around centre
+  // a; r carries a relative margin for the rounding of the sums along the chain.
+  void set_ball(const std::vector<std::size_t>& v, const Point& a, double r)
+  {
+    if (!std::isfinite(r)) throw Input_error("incidence tree parametrization: a body or free point is not linked to its parent");
+    for (int i = 0; i < 3; ++i) {
+      std::pair<double, double> ai = CGAL::to_interval(a[std::size_t(i)]);
+      const double m = r * (1 + 1e-9) + 1e-12 * (std::max)(std::abs(ai.first), std::abs(ai.second));
+      box_[v[std::size_t(i)]] = {ai.first - m, ai.second + m};
+    }
+  }
+
   const Rigid_body_collection<Traits>& c_;
   Incidence_tree tree_;
   Rotation_form form_;
@@ -740,6 +786,8 @@ private:
   std::vector<Polynomial> D_;
   std::vector<Polynomial_vector> o_;
   std::vector<Point> s_;
+  Link_graph links_;
+  mutable std::map<std::size_t, std::vector<double>> reach_;
 };
 
 } // namespace Rigid_incidence

@@ -287,6 +287,16 @@ if(TARGET rigid_incidence)
                      "-DCHECK_PROGRAM=$<TARGET_FILE:solve_json_check>" "-DCHECK_ARGS=STDOUT_FILE|${_ri_d}/${_s}.json|${_expect}"
                      -P ${_ri_cli_script})
   endforeach()
+  # the flagship: 40 real assembly modes (about 15 s in Release; not in the sanitizer build,
+  # where it would take minutes: the sanitizers see the same code on the smaller scenes)
+  if(NOT RIGID_INCIDENCE_SANITIZE)
+    add_test(NAME cli_solve_stewart_gough40
+             COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${_ri_d}/stewart_gough40.json|--json" -DEXPECT_RC=0
+                     "-DSTDOUT_FILE=${CMAKE_CURRENT_BINARY_DIR}/cli_solve_stewart_gough40.json"
+                     "-DCHECK_PROGRAM=$<TARGET_FILE:solve_json_check>"
+                     "-DCHECK_ARGS=STDOUT_FILE|${_ri_d}/stewart_gough40.json|--solutions|40|--certified|40|--complete|true"
+                     -P ${_ri_cli_script})
+  endif()
   add_test(NAME cli_solve_text
            COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${_ri_d}/tetra.json" -DEXPECT_RC=0
                    "-DEXPECT_STDOUT=4 configuration\\(s\\), all certified: complete&&configuration 4: certified&&statistics: "
