@@ -459,7 +459,21 @@ private:
     // box holds no root; `ratio` is the largest remaining fraction of a variable's width.
     bool reduce(Node& x, double& ratio)
     {
-      std::vector<double> tu(n, 0.0), tv(n, 1.0);
+      std::vector<double> tu(n, 0.0), tv(n, 1.0), cu, cv;
+      {
+        // the equations themselves (the projected-polyhedron method) first: cheap (each over
+        // its own variables), and on large boxes often sharper than the preconditioned ones,
+        // whose linearization is poor there; a box they exclude costs no preconditioning
+        for (std::size_t i = 0; i < n; ++i) {
+          const Shape& s = eq[i].shape;
+          if (!internal::clip_axes(s, x.b[i], cu, cv)) return false;
+          for (std::size_t k = 0; k < s.variables.size(); ++k) {
+            std::size_t j = s.variables[k];
+            tu[j] = (std::max)(tu[j], cu[k]);
+            tv[j] = (std::min)(tv[j], cv[k]);
+          }
+        }
+      }
       if (precondition) {
         Vector f;
         Matrix J;
@@ -478,26 +492,11 @@ private:
               IT m(M(k, i));
               for (std::size_t a = 0; a < full.size; ++a) g[a] = g[a] + m * F[i][a];
             }
+            if (!internal::clip_axes(full, g, cu, cv)) return false;
             for (std::size_t j = 0; j < n; ++j) {
-              double u, v;
-              if (!internal::clip_axis(full, g, j, u, v)) return false;
-              tu[j] = (std::max)(tu[j], u);
-              tv[j] = (std::min)(tv[j], v);
+              tu[j] = (std::max)(tu[j], cu[j]);
+              tv[j] = (std::min)(tv[j], cv[j]);
             }
-          }
-        }
-      }
-      {
-        // the equations themselves (the projected-polyhedron method): cheap, and on large
-        // boxes often sharper than the preconditioned ones, whose linearization is poor there
-        for (std::size_t i = 0; i < n; ++i) {
-          const Shape& s = eq[i].shape;
-          for (std::size_t k = 0; k < s.variables.size(); ++k) {
-            double u, v;
-            if (!internal::clip_axis(s, x.b[i], k, u, v)) return false;
-            std::size_t j = s.variables[k];
-            tu[j] = (std::max)(tu[j], u);
-            tv[j] = (std::min)(tv[j], v);
           }
         }
       }

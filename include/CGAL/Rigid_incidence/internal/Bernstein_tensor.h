@@ -13,6 +13,7 @@
 #include <CGAL/Rigid_incidence/internal/interval_ops.h>
 
 #include <algorithm>
+#include <limits>
 #include <cstddef>
 #include <vector>
 
@@ -136,30 +137,31 @@ std::vector<IT> restrict_axis(const Tensor_shape& s, const std::vector<IT>& b, s
 template <class IT>
 std::vector<IT> elevate_axis(const Tensor_shape& from, const std::vector<IT>& b, std::size_t j, const Tensor_shape& to)
 {
-  std::vector<IT> out(to.size, IT(0));
   const unsigned d = from.degrees[j], D = to.degrees[j];
-  const std::size_t sf = from.strides[j], stt = to.strides[j];
-  // map every fiber base of `from` to the corresponding base in `to`
-  std::vector<IT> f, g;
-  from.for_each_fiber(j, [&](std::size_t base) {
-    // decompose base into indices, recompose in `to`
-    std::size_t rest = base, tb = 0;
-    for (std::size_t k = 0; k < from.degrees.size(); ++k) {
-      std::size_t ik = rest / from.strides[k];
-      rest -= ik * from.strides[k];
-      tb += ik * to.strides[k];
+  // in one step: b'_k = sum_i C(d, i) C(D - d, k - i) / C(D, k) b_i (the weights are exact
+  // ratios of integers, enclosed once; 1 and 1/2 are exact)
+  auto binom = [](unsigned n, unsigned k) { double r = 1; for (unsigned t = 1; t <= k; ++t) r = r * (n - k + t) / t; return r; };
+  std::vector<IT> E((D + 1) * (d + 1), IT(0));
+  std::vector<char> unit((D + 1) * (d + 1), 0);
+  for (unsigned k = 0; k <= D; ++k)
+    for (unsigned i = 0; i <= d && i <= k; ++i) {
+      if (k - i > D - d) continue;
+      const double num = binom(d, i) * binom(D - d, k - i), den = binom(D, k);
+      E[k * (d + 1) + i] = IT(num) / IT(den);
+      unit[k * (d + 1) + i] = num == den;
     }
-    f.assign(d + 1, IT(0));
-    for (unsigned i = 0; i <= d; ++i) f[i] = b[base + i * sf];
-    for (unsigned e = d; e < D; ++e) {  // e -> e + 1
-      g.assign(e + 2, IT(0));
-      g[0] = f[0];
-      g[e + 1] = f[e];
-      for (unsigned i = 1; i <= e; ++i) g[i] = (IT(int(i)) * f[i - 1] + IT(int(e + 1 - i)) * f[i]) / IT(int(e + 1));
-      f.swap(g);
-    }
-    for (unsigned i = 0; i <= D; ++i) out[tb + i * stt] = f[i];
-  });
+  const std::size_t st = from.strides[j];  // the axes after j keep their degrees: the same stride
+  const std::size_t bf = st * (d + 1), bt = st * (D + 1);
+  std::vector<IT> out(to.size, IT(0));
+  for (std::size_t o = 0, ot = 0; o < from.size; o += bf, ot += bt)
+    for (std::size_t in = 0; in < st; ++in)
+      for (unsigned k = 0; k <= D; ++k) {
+        const unsigned i0 = k > D - d ? k - (D - d) : 0, i1 = (std::min)(k, d);
+        IT sum = unit[k * (d + 1) + i0] ? b[o + in + i0 * st] : E[k * (d + 1) + i0] * b[o + in + i0 * st];
+        for (unsigned i = i0 + 1; i <= i1; ++i)
+          sum = sum + (unit[k * (d + 1) + i] ? b[o + in + i * st] : E[k * (d + 1) + i] * b[o + in + i * st]);
+        out[ot + in + k * st] = sum;
+      }
   return out;
 }
 
@@ -225,20 +227,9 @@ template <class IT> bool strict_sign(const std::vector<IT>& b)
 // Projected-polyhedron clipping along local axis j: the parameter range [tu, tv] in [0, 1]
 // outside of which the convex hull of the control points (i/d, b_i) cannot meet zero.
 // Returns false if it cannot meet zero at all (no root in the box).
-template <class IT> bool clip_axis(const Tensor_shape& s, const std::vector<IT>& b, std::size_t j, double& tu, double& tv)
+// The clip of one axis, from the lowest and highest coefficient per index (d + 1 each).
+inline bool clip_polygon(unsigned d, const double* mn, const double* mx, double& tu, double& tv)
 {
-  const unsigned d = s.degrees[j];
-  const std::size_t st = s.strides[j];
-  std::vector<double> mn(d + 1), mx(d + 1);
-  bool first = true;
-  s.for_each_fiber(j, [&](std::size_t base) {
-    for (unsigned i = 0; i <= d; ++i) {
-      double l = Interval_ops<IT>::lower_double(b[base + i * st]), h = Interval_ops<IT>::upper_double(b[base + i * st]);
-      if (first) { mn[i] = l; mx[i] = h; }
-      else { mn[i] = (std::min)(mn[i], l); mx[i] = (std::max)(mx[i], h); }
-    }
-    first = false;
-  });
   if (d == 0) { tu = 0; tv = 1; return mn[0] <= 0 && mx[0] >= 0; }
   // crossings of the zero axis by segments between a point <= 0 and a point >= 0 (upward
   // rounding is set by the caller for Interval_nt; the interval type keeps the crossing safe)
@@ -271,6 +262,48 @@ template <class IT> bool clip_axis(const Tensor_shape& s, const std::vector<IT>&
   // i/d is rounded: widen by a few ulps of 1
   tu = (std::max)(0.0, lo - 4e-16);
   tv = (std::min)(1.0, hi + 4e-16);
+  return true;
+}
+
+// The projected control polygon of every axis at once (one pass over the array): for each
+// axis j and index i_j, the lowest and highest coefficient with that index. Then, per axis,
+// the part [tu, tv] of [0, 1] outside of which the convex hull of the control points
+// (i/d, b_i) cannot meet zero. Returns false if it cannot meet zero at all (no root in the
+// box). tu and tv get one entry per local axis.
+template <class IT> bool clip_axes(const Tensor_shape& s, const std::vector<IT>& b, std::vector<double>& tu, std::vector<double>& tv)
+{
+  const std::size_t k = s.degrees.size();
+  tu.assign(k, 0.0);
+  tv.assign(k, 1.0);
+  // the bounds as doubles once; then per axis and index, strided min and max (contiguous
+  // runs of the later axes)
+  std::vector<double> L(s.size), H(s.size);
+  double all_lo = std::numeric_limits<double>::infinity(), all_hi = -all_lo;
+  for (std::size_t a = 0; a < s.size; ++a) {
+    L[a] = Interval_ops<IT>::lower_double(b[a]);
+    H[a] = Interval_ops<IT>::upper_double(b[a]);
+    all_lo = (std::min)(all_lo, L[a]);
+    all_hi = (std::max)(all_hi, H[a]);
+  }
+  if (!(all_lo <= 0 && all_hi >= 0)) return false;
+  std::vector<double> mn, mx;
+  for (std::size_t j = 0; j < k; ++j) {
+    const unsigned d = s.degrees[j];
+    const std::size_t st = s.strides[j], block = st * (d + 1);
+    mn.assign(d + 1, std::numeric_limits<double>::infinity());
+    mx.assign(d + 1, -std::numeric_limits<double>::infinity());
+    for (unsigned i = 0; i <= d; ++i) {
+      double m = mn[i], M = mx[i];
+      for (std::size_t outer = i * st; outer < s.size; outer += block)
+        for (std::size_t in = 0; in < st; ++in) {
+          m = (std::min)(m, L[outer + in]);
+          M = (std::max)(M, H[outer + in]);
+        }
+      mn[i] = m;
+      mx[i] = M;
+    }
+    if (!clip_polygon(d, mn.data(), mx.data(), tu[j], tv[j])) return false;
+  }
   return true;
 }
 
