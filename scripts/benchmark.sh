@@ -24,8 +24,8 @@ cat "$build/results/reduced_system.md"
 # The subdivision solver on the paper scenes and stewart_gough40: time, boxes and achieved
 # accuracy against the tolerance (double, Gmpfi 113/256 bits against a 512-bit reference), fast
 # against certified, the naive formulations under the same solver, and PHCpack (phc -b) when
-# installed (3 repeats, 20 s per cell, 10 s for stewart_gough40; about 3 to 5 minutes); also
+# installed (3 repeats, 20 s per cell, 60 s for stewart_gough40; about 8 to 10 minutes); also
 # writes solver.svg.
-"$build/benchmark/Rigid_incidence/benchmark_solver" "$build/results/solver" 3 20 10
+"$build/benchmark/Rigid_incidence/benchmark_solver" "$build/results/solver" 3 20 60
 echo
 cat "$build/results/solver.md"
