@@ -101,7 +101,7 @@ int main(int argc, char** argv)
         ++face_boxes;
       }
     }
-    p.name = "random #" + std::to_string(k) + " (n " + std::to_string(n) + ", " +
+    p.name = "random #" + std::to_string(k) + (k % 10 == 3 ? " [smear]" : k % 10 == 5 ? " [round robin]" : "") + " (n " + std::to_string(n) + ", " +
              (kind == 0 ? "grid" : kind == 1 ? "triangular" : kind == 2 ? "general" : "shared points") + (coordinates ? ", new coordinates" : "") +
              (coupled ? ", coupled" : "") + ")";
     planted_roots += p.roots.size();
@@ -117,7 +117,10 @@ int main(int argc, char** argv)
     auto s0 = std::chrono::steady_clock::now();
     RI::Solver_result<I> r;
     try {
-      RI::Subdivision_solver<I> solver;
+      RI::Subdivision_solver_parameters prm;
+      if (k % 10 == 3) prm.split = RI::Split_strategy::SMEAR;  // every split strategy finds every root
+      if (k % 10 == 5) prm.split = RI::Split_strategy::ROUND_ROBIN;
+      RI::Subdivision_solver<I> solver(prm);
       r = interval ? solver.solve(to_interval_system(p.system)) : solver.solve(p.system);
     } catch (const std::exception& ex) {
       CHECK(false, p.name << ": solve threw " << ex.what() << "\n" << system_string(p.system));

@@ -19,7 +19,8 @@ namespace Rigid_incidence {
 /// How the solver chooses the variable to split a box in.
 enum class Split_strategy {
   LARGEST_WIDTH, ///< the variable whose interval is widest relative to the initial box (default)
-  ROUND_ROBIN    ///< the variables in turn, whatever their widths
+  ROUND_ROBIN,   ///< the variables in turn, whatever their widths
+  SMEAR          ///< the variable j with the largest max_i |df_i/dx_j| / max_k |df_i/dx_k| * width_j / initial width_j at the box centre (after IBEX's smear)
 };
 
 /*!

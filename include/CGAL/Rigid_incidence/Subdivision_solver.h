@@ -423,11 +423,24 @@ private:
       // the variable to split
       std::size_t best = n;
       double score = -1;
+      Vector fc;
+      Matrix Jc;
+      if (P.split == Split_strategy::SMEAR) evaluate_d(center_d(x.lo, x.hi), fc, Jc);
       for (std::size_t k = 0; k < n; ++k) {
         std::size_t j = P.split == Split_strategy::ROUND_ROBIN ? (x.depth + k) % n : k;
         double w = width(x, j);
         if (w <= min_width || !O::splittable(x.lo[j], x.hi[j])) continue;
         double s = w / initial_width[j];
+        if (P.split == Split_strategy::SMEAR) {
+          double m = 0;  // relative to the equation's largest derivative: the equations' scales do not matter
+          for (std::size_t i = 0; i < n; ++i) {
+            double row = Jc.row(Eigen::Index(i)).cwiseAbs().maxCoeff();
+            if (row > 0) m = (std::max)(m, std::abs(Jc(Eigen::Index(i), Eigen::Index(j))) / row);
+          }
+          // floored: a variable the centre's derivatives miss (a symmetric box, a product
+          // of factors) is still split once it is 10 times wider than the others
+          s = (std::max)(m, 0.1) * w / initial_width[j];
+        }
         if (P.split == Split_strategy::ROUND_ROBIN) { best = j; break; }
         if (s > score) { score = s; best = j; }
       }
