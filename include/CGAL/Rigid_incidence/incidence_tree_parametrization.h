@@ -211,7 +211,7 @@ public:
         }
       e.pivot = child.points[best_s];
       e.anchor = parent.points[best_a];
-      set_ball(e.translation, coordinates_[e.parent][best_a], best);
+      set_ball(e.translation, coordinates_[e.parent][best_a], best, "body '" + child.name + "'", "its parent '" + parent.name + "'");
     }
     for (std::size_t p : c.free_points()) {
       const auto& root = c.body(tree.root);
@@ -221,7 +221,8 @@ public:
         double r = reach(root.points[j], p);
         if (r < best) { best = r; best_a = j; }
       }
-      set_ball({free_variable_[p], free_variable_[p] + 1, free_variable_[p] + 2}, coordinates_[tree.root][best_a], best);
+      set_ball({free_variable_[p], free_variable_[p] + 1, free_variable_[p] + 2}, coordinates_[tree.root][best_a], best,
+               "free point '" + c.label(p) + "'", "the root body '" + root.name + "'");
     }
     // the maps
     const NT I[9] = {NT(1), NT(0), NT(0), NT(0), NT(1), NT(0), NT(0), NT(0), NT(1)};
@@ -763,9 +764,11 @@ private:
   }
   // The box of three variables (x, y, z of one point) for a ball of radius r around centre
   // a; r carries a relative margin for the rounding of the sums along the chain.
-  void set_ball(const std::vector<std::size_t>& v, const Point& a, double r)
+  void set_ball(const std::vector<std::size_t>& v, const Point& a, double r, const std::string& who, const std::string& to)
   {
-    if (!std::isfinite(r)) throw Input_error("incidence tree parametrization: a body or free point is not linked to its parent");
+    if (!std::isfinite(r))
+      throw Input_error("incidence tree parametrization: " + who + " is not linked to " + to +
+                        " by any chain of known lengths (the scene is not connected): its translation has no bound");
     for (int i = 0; i < 3; ++i) {
       std::pair<double, double> ai = CGAL::to_interval(a[std::size_t(i)]);
       const double m = r * (1 + 1e-9) + 1e-12 * (std::max)(std::abs(ai.first), std::abs(ai.second));
