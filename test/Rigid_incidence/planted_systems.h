@@ -423,53 +423,41 @@ inline Q distance_to_box(const Point& x, const std::vector<std::pair<double, dou
 }
 
 // ------------------------------------------------------------------ coefficient conversions
-inline RI::Polynomial_system<CGAL::Interval_nt<false>> to_interval_system(const System& s)
+// The same system with every coefficient converted by `convert`.
+template <class T, class F>
+RI::Polynomial_system<T> convert_system(const System& s, F convert)
 {
-  typedef CGAL::Interval_nt<false> I;
-  RI::Polynomial_system<I> r;
+  RI::Polynomial_system<T> r;
   r.variable_names = s.variable_names;
   r.box = s.box;
   r.labels = s.labels;
   for (const auto& f : s.equations) {
-    RI::Sparse_polynomial<I> p(s.number_of_variables());
-    for (const auto& t : f.terms()) p.add_term(t.first, I(CGAL::to_interval(t.second)));
+    RI::Sparse_polynomial<T> p(s.number_of_variables());
+    for (const auto& t : f.terms()) p.add_term(t.first, convert(t.second));
     r.equations.push_back(p);
   }
   return r;
+}
+
+inline RI::Polynomial_system<CGAL::Interval_nt<false>> to_interval_system(const System& s)
+{
+  return convert_system<CGAL::Interval_nt<false>>(s, [](const Q& c) { return CGAL::Interval_nt<false>(CGAL::to_interval(c)); });
 }
 
 // exact only if every coefficient is a double (the caller makes sure)
 inline RI::Polynomial_system<double> to_double_system(const System& s)
 {
-  RI::Polynomial_system<double> r;
-  r.variable_names = s.variable_names;
-  r.box = s.box;
-  r.labels = s.labels;
-  for (const auto& f : s.equations) {
-    RI::Sparse_polynomial<double> p(s.number_of_variables());
-    for (const auto& t : f.terms()) {
-      double d = CGAL::to_double(t.second);
-      CHECK(Q(d) == t.second, "test setup: coefficient " << t.second << " is not a double");
-      p.add_term(t.first, d);
-    }
-    r.equations.push_back(p);
-  }
-  return r;
+  return convert_system<double>(s, [](const Q& c) {
+    double d = CGAL::to_double(c);
+    CHECK(Q(d) == c, "test setup: coefficient " << c << " is not a double");
+    return d;
+  });
 }
 
 #ifdef CGAL_USE_MPFI
 inline RI::Polynomial_system<CGAL::Gmpfi> to_gmpfi_system(const System& s, CGAL::Gmpfi::Precision_type prec)
 {
-  RI::Polynomial_system<CGAL::Gmpfi> r;
-  r.variable_names = s.variable_names;
-  r.box = s.box;
-  r.labels = s.labels;
-  for (const auto& f : s.equations) {
-    RI::Sparse_polynomial<CGAL::Gmpfi> p(s.number_of_variables());
-    for (const auto& t : f.terms()) p.add_term(t.first, CGAL::Gmpfi(t.second, prec));
-    r.equations.push_back(p);
-  }
-  return r;
+  return convert_system<CGAL::Gmpfi>(s, [prec](const Q& c) { return CGAL::Gmpfi(c, prec); });
 }
 #endif
 
