@@ -153,6 +153,14 @@ private:
     double last_contraction = 0;          // ||I - Y J(X)|| of the last Krawczyk test
     Shape full;                           // all variables, the highest degree of each
     bool precondition;
+    std::vector<internal::Embedding<IT>> embedding;  // per equation: its array over `full`
+    // work buffers of reduce(), kept between boxes
+    internal::Clip_workspace clip_work;
+    std::vector<std::vector<IT>> F;
+    std::vector<IT> g, embed_scratch;
+    std::vector<std::vector<double>> F_nl, F_hi;
+    std::vector<double> g_nl, g_hi;
+    mutable std::vector<double> eval_x, eval_work;  // of evaluate_d()
     std::vector<Found> found;
     std::vector<Node> unknown_nodes;
     std::vector<std::string> unknown_reason;
@@ -176,6 +184,8 @@ private:
       full.set(all, dmax);
       // the dense preconditioned arrays cost full.size per equation: only when small
       precondition = P.preconditioning && P.domain_reduction && full.size * n <= 40000;
+      if (precondition)
+        for (const auto& e : eq) embedding.emplace_back(e.shape, full);
       double widest = 0;
       for (std::size_t j = 0; j < n; ++j) {
         dlo.push_back(O::bound_from_double(sys.box[j].first));
@@ -314,12 +324,14 @@ private:
     {
       f.resize(n);
       J.setZero(n, n);
+      std::vector<double>& xl = eval_x;
       for (std::size_t i = 0; i < n; ++i) {
         const Equation& e = eq[i];
-        std::vector<double> xl;
+        xl.clear();
         for (std::size_t v : e.shape.variables) xl.push_back(x[v]);
-        f[i] = internal::horner(e.shape, e.power_d, xl);
-        for (std::size_t k = 0; k < e.shape.variables.size(); ++k) J(i, e.shape.variables[k]) = internal::horner(e.dshape[k], e.dpower_d[k], xl);
+        f[i] = internal::horner(e.shape, e.power_d, xl, eval_work);
+        for (std::size_t k = 0; k < e.shape.variables.size(); ++k)
+          J(i, e.shape.variables[k]) = internal::horner(e.dshape[k], e.dpower_d[k], xl, eval_work);
       }
     }
 
@@ -468,6 +480,43 @@ private:
       }
     }
 
+    // The clip of the k-th preconditioned equation sum_i M(k, i) F_i (F: the arrays over
+    // `full`). With double intervals the sum runs on the bounds directly, the FPU rounding
+    // upward (set for the whole solve by Solver_precision_guard): for a weight m >= 0 the upper bound gathers m * hi and
+    // the negated lower bound m * (-lo), for m < 0 the other way round; every sum then rounds
+    // up, so the result encloses the exact combination (and the loops vectorize).
+    bool preconditioned_clip(const Matrix& M, std::size_t k, std::vector<double>& cu, std::vector<double>& cv)
+    {
+      if constexpr (std::is_same<IT, CGAL::Interval_nt<false>>::value) {  // the rounding is upward throughout
+        if (F_nl.size() != n) { F_nl.assign(n, std::vector<double>(full.size)); F_hi.assign(n, std::vector<double>(full.size)); }
+        if (k == 0)
+          for (std::size_t i = 0; i < n; ++i)
+            for (std::size_t a = 0; a < full.size; ++a) { F_nl[i][a] = -F[i][a].inf(); F_hi[i][a] = F[i][a].sup(); }
+        g_nl.assign(full.size, 0.0);
+        g_hi.assign(full.size, 0.0);
+        double* gl = g_nl.data();
+        double* gh = g_hi.data();
+        for (std::size_t i = 0; i < n; ++i) {
+          const double m = M(Eigen::Index(k), Eigen::Index(i));
+          if (m == 0) continue;
+          const double am = std::abs(m);
+          const double* up = m > 0 ? F_hi[i].data() : F_nl[i].data();
+          const double* dn = m > 0 ? F_nl[i].data() : F_hi[i].data();
+          for (std::size_t a = 0; a < full.size; ++a) { gh[a] += am * up[a]; gl[a] += am * dn[a]; }
+        }
+        for (std::size_t a = 0; a < full.size; ++a) gl[a] = -gl[a];
+        return internal::clip_bounds(full, gl, gh, cu, cv, clip_work);
+      } else {
+        g.assign(full.size, IT(0));
+        for (std::size_t i = 0; i < n; ++i) {
+          if (M(Eigen::Index(k), Eigen::Index(i)) == 0) continue;
+          IT m(M(Eigen::Index(k), Eigen::Index(i)));
+          for (std::size_t a = 0; a < full.size; ++a) g[a] = g[a] + m * F[i][a];
+        }
+        return internal::clip_axes(full, g, cu, cv, clip_work);
+      }
+    }
+
     // Projected-polyhedron clipping (preconditioned when affordable). Returns false if the
     // box holds no root; `ratio` is the largest remaining fraction of a variable's width.
     bool reduce(Node& x, double& ratio)
@@ -479,7 +528,7 @@ private:
         // whose linearization is poor there; a box they exclude costs no preconditioning
         for (std::size_t i = 0; i < n; ++i) {
           const Shape& s = eq[i].shape;
-          if (!internal::clip_axes(s, x.b[i], cu, cv)) return false;
+          if (!internal::clip_axes(s, x.b[i], cu, cv, clip_work)) return false;
           for (std::size_t k = 0; k < s.variables.size(); ++k) {
             std::size_t j = s.variables[k];
             tu[j] = (std::max)(tu[j], cu[k]);
@@ -495,17 +544,10 @@ private:
         Eigen::FullPivLU<Matrix> lu(J);
         Matrix M;
         if (lu.isInvertible() && lu.rcond() > 1e-12 && (M = lu.inverse()).allFinite()) {
-          std::vector<std::vector<IT>> F;
-          for (std::size_t i = 0; i < n; ++i) F.push_back(internal::embed(eq[i].shape, x.b[i], full));
-          std::vector<IT> g(full.size);
+          F.resize(n);
+          for (std::size_t i = 0; i < n; ++i) embedding[i].apply(x.b[i], F[i], embed_scratch);
           for (std::size_t k = 0; k < n; ++k) {
-            std::fill(g.begin(), g.end(), IT(0));
-            for (std::size_t i = 0; i < n; ++i) {
-              if (M(k, i) == 0) continue;
-              IT m(M(k, i));
-              for (std::size_t a = 0; a < full.size; ++a) g[a] = g[a] + m * F[i][a];
-            }
-            if (!internal::clip_axes(full, g, cu, cv)) return false;
+            if (!preconditioned_clip(M, k, cu, cv)) return false;
             for (std::size_t j = 0; j < n; ++j) {
               tu[j] = (std::max)(tu[j], cu[j]);
               tv[j] = (std::min)(tv[j], cv[j]);

@@ -13,6 +13,7 @@
 #include <CGAL/Rigid_incidence/internal/interval_ops.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <cstddef>
 #include <vector>
@@ -102,22 +103,26 @@ std::vector<IT> to_bernstein(const Tensor_shape& s, std::vector<IT> a, const std
 template <class IT>
 void split(const Tensor_shape& s, const std::vector<IT>& b, std::size_t j, const IT& t, std::vector<IT>& left, std::vector<IT>& right)
 {
-  left = b;
-  right = b;
   const unsigned d = s.degrees[j];
-  if (d == 0) return;
+  if (d == 0) { left = b; right = b; return; }
+  // every entry of both halves is written below
+  left.resize(b.size());
+  right.resize(b.size());
   const std::size_t st = s.strides[j];
   const IT u = IT(1) - t;
   const bool half = Interval_ops<IT>::lower(t) == Interval_ops<IT>::upper(t) && Interval_ops<IT>::to_double(Interval_ops<IT>::lower(t)) == 0.5;
-  std::vector<IT> w(d + 1);
+  IT w[64];
+  std::vector<IT> wv;
+  IT* wp = d < 64 ? w : (wv.resize(d + 1), wv.data());
   s.for_each_fiber(j, [&](std::size_t base) {
-    for (unsigned i = 0; i <= d; ++i) w[i] = b[base + i * st];
-    left[base] = w[0];
-    right[base + d * st] = w[d];
+    for (unsigned i = 0; i <= d; ++i) wp[i] = b[base + i * st];
+    left[base] = wp[0];
+    right[base + d * st] = wp[d];
     for (unsigned r = 1; r <= d; ++r) {
-      for (unsigned i = 0; i + r <= d; ++i) w[i] = half ? (w[i] + w[i + 1]) / 2 : u * w[i] + t * w[i + 1];
-      left[base + r * st] = w[0];
-      right[base + (d - r) * st] = w[d - r];
+      if (half) for (unsigned i = 0; i + r <= d; ++i) wp[i] = Interval_ops<IT>::half_sum(wp[i], wp[i + 1]);
+      else for (unsigned i = 0; i + r <= d; ++i) wp[i] = u * wp[i] + t * wp[i + 1];
+      left[base + r * st] = wp[0];
+      right[base + (d - r) * st] = wp[d - r];
     }
   });
 }
@@ -132,83 +137,128 @@ std::vector<IT> restrict_axis(const Tensor_shape& s, const std::vector<IT>& b, s
   return cur;
 }
 
-// Degree elevation along local axis j from degree d to D (D >= d): returns the array in the
-// shape `to` (same variables, degree D on axis j).
-template <class IT>
-std::vector<IT> elevate_axis(const Tensor_shape& from, const std::vector<IT>& b, std::size_t j, const Tensor_shape& to)
+// The binomial coefficient C(n, k), exact for the degrees of the solver's equations.
+inline double binomial(unsigned n, unsigned k)
 {
-  const unsigned d = from.degrees[j], D = to.degrees[j];
-  // in one step: b'_k = sum_i C(d, i) C(D - d, k - i) / C(D, k) b_i (the weights are exact
-  // ratios of integers, enclosed once; 1 and 1/2 are exact)
-  auto binom = [](unsigned n, unsigned k) { double r = 1; for (unsigned t = 1; t <= k; ++t) r = r * (n - k + t) / t; return r; };
-  std::vector<IT> E((D + 1) * (d + 1), IT(0));
-  std::vector<char> unit((D + 1) * (d + 1), 0);
-  for (unsigned k = 0; k <= D; ++k)
-    for (unsigned i = 0; i <= d && i <= k; ++i) {
-      if (k - i > D - d) continue;
-      const double num = binom(d, i) * binom(D - d, k - i), den = binom(D, k);
-      E[k * (d + 1) + i] = IT(num) / IT(den);
-      unit[k * (d + 1) + i] = num == den;
-    }
-  const std::size_t st = from.strides[j];  // the axes after j keep their degrees: the same stride
-  const std::size_t bf = st * (d + 1), bt = st * (D + 1);
-  std::vector<IT> out(to.size, IT(0));
-  for (std::size_t o = 0, ot = 0; o < from.size; o += bf, ot += bt)
-    for (std::size_t in = 0; in < st; ++in)
-      for (unsigned k = 0; k <= D; ++k) {
-        const unsigned i0 = k > D - d ? k - (D - d) : 0, i1 = (std::min)(k, d);
-        IT sum = unit[k * (d + 1) + i0] ? b[o + in + i0 * st] : E[k * (d + 1) + i0] * b[o + in + i0 * st];
-        for (unsigned i = i0 + 1; i <= i1; ++i)
-          sum = sum + (unit[k * (d + 1) + i] ? b[o + in + i * st] : E[k * (d + 1) + i] * b[o + in + i * st]);
-        out[ot + in + k * st] = sum;
-      }
-  return out;
+  double r = 1;
+  for (unsigned t = 1; t <= k; ++t) r = r * (n - k + t) / t;
+  return r;
 }
 
-// The array of `b` (shape `from`) written over the variables and degrees of `to` (a superset
-// of `from`'s variables with degrees at least as high): missing variables are constant,
-// lower degrees elevated.
+// How to write an array of shape `from` over the variables and degrees of `to` (a superset
+// of `from`'s variables with degrees at least as high): missing variables are constant (their
+// axis is inserted with degree 0, which leaves the linear order unchanged), lower degrees are
+// elevated one axis at a time. The elevation weights are enclosed once, when the plan is made.
+template <class IT> class Embedding
+{
+  struct Step
+  {
+    Tensor_shape from, to;
+    std::size_t axis;
+    std::vector<IT> weight;   // (D + 1) x (d + 1): b'_k = sum_i weight[k][i] b_i
+    std::vector<char> unit;   // the weight is exactly 1
+  };
+  std::vector<Step> steps_;
+
+public:
+  Embedding() {}
+  Embedding(const Tensor_shape& from, const Tensor_shape& to)
+  {
+    std::vector<unsigned> degs(to.variables.size(), 0);
+    for (std::size_t k = 0; k < from.variables.size(); ++k) degs[to.local(from.variables[k])] = from.degrees[k];
+    Tensor_shape cur;
+    cur.set(to.variables, degs);
+    for (std::size_t k = 0; k < to.variables.size(); ++k) {
+      if (cur.degrees[k] == to.degrees[k]) continue;
+      Step st;
+      st.from = cur;
+      std::vector<unsigned> nd = cur.degrees;
+      nd[k] = to.degrees[k];
+      st.to.set(to.variables, nd);
+      st.axis = k;
+      // degree elevation d -> D in one step: b'_k = sum_i C(d, i) C(D - d, k - i) / C(D, k) b_i
+      const unsigned d = cur.degrees[k], D = to.degrees[k];
+      st.weight.assign((D + 1) * (d + 1), IT(0));
+      st.unit.assign((D + 1) * (d + 1), 0);
+      for (unsigned q = 0; q <= D; ++q)
+        for (unsigned i = 0; i <= d && i <= q; ++i) {
+          if (q - i > D - d) continue;
+          const double num = binomial(d, i) * binomial(D - d, q - i), den = binomial(D, q);
+          st.weight[q * (d + 1) + i] = IT(num) / IT(den);
+          st.unit[q * (d + 1) + i] = num == den;
+        }
+      cur = st.to;
+      steps_.push_back(std::move(st));
+    }
+  }
+  // `out` gets the array of `b` over the target shape; `scratch` is a work buffer.
+  void apply(const std::vector<IT>& b, std::vector<IT>& out, std::vector<IT>& scratch) const
+  {
+    if (steps_.empty()) { out = b; return; }
+    const std::vector<IT>* src = &b;
+    for (std::size_t t = 0; t < steps_.size(); ++t) {
+      const Step& st = steps_[t];
+      // the last step writes `out`; the others alternate between `out` and `scratch` so that
+      // source and target never coincide
+      std::vector<IT>& dst = ((steps_.size() - 1 - t) % 2 == 0) ? out : scratch;
+      const unsigned d = st.from.degrees[st.axis], D = st.to.degrees[st.axis];
+      const std::size_t s = st.from.strides[st.axis];  // the axes after it keep their degrees
+      const std::size_t bf = s * (d + 1), bt = s * (D + 1);
+      dst.resize(st.to.size);
+      for (std::size_t o = 0, ot = 0; o < st.from.size; o += bf, ot += bt)
+        for (unsigned q = 0; q <= D; ++q) {
+          const unsigned i0 = q > D - d ? q - (D - d) : 0, i1 = (std::min)(q, d);
+          for (std::size_t in = 0; in < s; ++in) {
+            const IT* x = &(*src)[o + in];
+            IT sum = st.unit[q * (d + 1) + i0] ? x[i0 * s] : st.weight[q * (d + 1) + i0] * x[i0 * s];
+            for (unsigned i = i0 + 1; i <= i1; ++i)
+              sum = sum + (st.unit[q * (d + 1) + i] ? x[i * s] : st.weight[q * (d + 1) + i] * x[i * s]);
+            dst[ot + in + q * s] = sum;
+          }
+        }
+      src = &dst;
+    }
+  }
+};
+
+// The array of `b` (shape `from`) written over the variables and degrees of `to`.
 template <class IT>
 std::vector<IT> embed(const Tensor_shape& from, const std::vector<IT>& b, const Tensor_shape& to)
 {
-  // first: insert the missing variables with degree 0 (same data, new shape)
-  std::vector<unsigned> degs(to.variables.size(), 0);
-  for (std::size_t k = 0; k < from.variables.size(); ++k) degs[to.local(from.variables[k])] = from.degrees[k];
-  Tensor_shape cur;
-  cur.set(to.variables, degs);
-  std::vector<IT> a = b;  // same linear order: degree-0 axes do not change the index
-  for (std::size_t k = 0; k < to.variables.size(); ++k) {
-    if (cur.degrees[k] == to.degrees[k]) continue;
-    std::vector<unsigned> nd = cur.degrees;
-    nd[k] = to.degrees[k];
-    Tensor_shape next;
-    next.set(to.variables, nd);
-    a = elevate_axis(cur, a, k, next);
-    cur = next;
-  }
-  return a;
+  std::vector<IT> out, scratch;
+  Embedding<IT>(from, to).apply(b, out, scratch);
+  return out;
 }
 
 // Value of a power-basis tensor at a point (one interval per local variable), Horner per axis.
+// (`cur` is a work buffer.)
 template <class T>
-T horner(const Tensor_shape& s, const std::vector<T>& a, const std::vector<T>& x)
+T horner(const Tensor_shape& s, const std::vector<T>& a, const std::vector<T>& x, std::vector<T>& cur)
 {
-  // contract the last axis first
-  std::vector<T> cur = a;
+  if (s.variables.empty()) return a.empty() ? T(0) : a[0];
+  // contract the last axis first; after the first contraction in place (group o is read
+  // before index o <= o * (d + 1) is written)
   std::size_t size = s.size;
   for (std::size_t j = s.variables.size(); j-- > 0;) {
     const unsigned d = s.degrees[j];
     const std::size_t n = size / (d + 1);
-    std::vector<T> next(n, T(0));
+    const bool first = size == s.size;
+    const T* src = first ? a.data() : cur.data();
+    if (first) cur.resize(n);
     for (std::size_t o = 0; o < n; ++o) {
-      T v = cur[o * (d + 1) + d];
-      for (unsigned i = d; i-- > 0;) v = v * x[j] + cur[o * (d + 1) + i];
-      next[o] = v;
+      T v = src[o * (d + 1) + d];
+      for (unsigned i = d; i-- > 0;) v = v * x[j] + src[o * (d + 1) + i];
+      cur[o] = v;
     }
-    cur.swap(next);
     size = n;
   }
-  return cur.empty() ? T(0) : cur[0];
+  return cur[0];
+}
+template <class T>
+T horner(const Tensor_shape& s, const std::vector<T>& a, const std::vector<T>& x)
+{
+  std::vector<T> cur;
+  return horner(s, a, x, cur);
 }
 
 // Does the array have a strict sign (every coefficient > 0, or every one < 0)?
@@ -231,19 +281,19 @@ template <class IT> bool strict_sign(const std::vector<IT>& b)
 inline bool clip_polygon(unsigned d, const double* mn, const double* mx, double& tu, double& tv)
 {
   if (d == 0) { tu = 0; tv = 1; return mn[0] <= 0 && mx[0] >= 0; }
-  // crossings of the zero axis by segments between a point <= 0 and a point >= 0 (upward
-  // rounding is set by the caller for Interval_nt; the interval type keeps the crossing safe)
-  typedef CGAL::Interval_nt<false> D;
-  typename D::Protector protect;
+  // crossings of the zero axis by segments between a point <= 0 and a point >= 0, in plain
+  // double: t1 + (t2 - t1) * (-y1) / (y2 - y1) with 0 <= -y1 <= y2 - y1 is off by a few units
+  // in the last place of 1 in any rounding mode, so widening each crossing by 2e-15 (and the
+  // i/d rounding with it) keeps the clip safe without switching the rounding mode
   bool any = false;
   double lo = 1, hi = 0;
   auto take = [&](double t1, double y1, double t2, double y2) {
     // y1 <= 0 <= y2
-    D t;
-    if (y1 == y2) t = D((std::min)(t1, t2), (std::max)(t1, t2));
-    else t = D(t1) + (D(t2) - D(t1)) * (D(0) - D(y1)) / (D(y2) - D(y1));
-    lo = (std::min)(lo, t.inf());
-    hi = (std::max)(hi, t.sup());
+    double a = t1, b = t2;
+    const double den = y2 - y1;
+    if (y1 != y2 && std::isfinite(den) && den > 0) a = b = t1 + (t2 - t1) * ((-y1) / den);
+    lo = (std::min)(lo, (std::min)(a, b));
+    hi = (std::max)(hi, (std::max)(a, b));
     any = true;
   };
   for (unsigned i = 0; i <= d; ++i) {
@@ -259,52 +309,105 @@ inline bool clip_polygon(unsigned d, const double* mn, const double* mx, double&
     }
   }
   if (!any) return false;
-  // i/d is rounded: widen by a few ulps of 1
-  tu = (std::max)(0.0, lo - 4e-16);
-  tv = (std::min)(1.0, hi + 4e-16);
+  tu = (std::max)(0.0, lo - 2e-15);
+  tv = (std::min)(1.0, hi + 2e-15);
   return true;
 }
 
-// The projected control polygon of every axis at once (one pass over the array): for each
-// axis j and index i_j, the lowest and highest coefficient with that index. Then, per axis,
-// the part [tu, tv] of [0, 1] outside of which the convex hull of the control points
-// (i/d, b_i) cannot meet zero. Returns false if it cannot meet zero at all (no root in the
-// box). tu and tv get one entry per local axis.
-template <class IT> bool clip_axes(const Tensor_shape& s, const std::vector<IT>& b, std::vector<double>& tu, std::vector<double>& tv)
+// Work buffers of clip_axes, kept between calls.
+struct Clip_workspace
+{
+  std::vector<double> L, H, mn, mx, buffer;
+  std::size_t used = 0;
+};
+
+// The projected control polygons' extremes: for each axis j of a dense tensor (extents
+// dims[0..k), last axis fastest) and index i, mn[j][i] = the least L over the entries whose
+// j-th index is i, mx[j][i] = the largest H. Halving the axes: the least over the later half's
+// block (contiguous) gives the earlier half's tensor, the least over the earlier half's
+// indices (contiguous rows) the later half's; about 2 passes over the data instead of k.
+inline void marginal_extremes(const double* L, const double* H, const std::size_t* dims, std::size_t k, double* const* mn,
+                              double* const* mx, Clip_workspace& w)
+{
+  if (k == 1) {
+    for (std::size_t i = 0; i < dims[0]; ++i) { mn[0][i] = L[i]; mx[0][i] = H[i]; }
+    return;
+  }
+  const std::size_t h = k / 2;
+  std::size_t P = 1, S = 1;
+  for (std::size_t j = 0; j < h; ++j) P *= dims[j];
+  for (std::size_t j = h; j < k; ++j) S *= dims[j];
+  double* BL = w.buffer.data() + w.used;
+  double* BH = BL + P;
+  double* CL = BH + P;
+  double* CH = CL + S;
+  w.used += 2 * (P + S);
+  for (std::size_t t = 0; t < S; ++t) { CL[t] = L[t]; CH[t] = H[t]; }
+  for (std::size_t o = 0; o < P; ++o) {
+    const double* l = L + o * S;
+    const double* u = H + o * S;
+    double m = l[0], M = u[0];
+    for (std::size_t t = 0; t < S; ++t) {
+      m = (std::min)(m, l[t]);
+      M = (std::max)(M, u[t]);
+      CL[t] = (std::min)(CL[t], l[t]);
+      CH[t] = (std::max)(CH[t], u[t]);
+    }
+    BL[o] = m;
+    BH[o] = M;
+  }
+  marginal_extremes(BL, BH, dims, h, mn, mx, w);
+  marginal_extremes(CL, CH, dims + h, k - h, mn + h, mx + h, w);
+}
+
+// The projected control polygon of every axis: per axis, the part [tu, tv] of [0, 1] outside
+// of which the convex hull of the control points (i/d, b_i) cannot meet zero. Returns false if
+// it cannot meet zero at all (no root in the box). tu and tv get one entry per local axis. L
+// and H are the coefficients' lower and upper bounds.
+inline bool clip_bounds(const Tensor_shape& s, const double* L, const double* H, std::vector<double>& tu, std::vector<double>& tv,
+                        Clip_workspace& w)
 {
   const std::size_t k = s.degrees.size();
   tu.assign(k, 0.0);
   tv.assign(k, 1.0);
-  // the bounds as doubles once; then per axis and index, strided min and max (contiguous
-  // runs of the later axes)
-  std::vector<double> L(s.size), H(s.size);
+  if (k == 0) return L[0] <= 0 && H[0] >= 0;
+  std::size_t total = 0, dims[64];
+  std::vector<std::size_t> dimv;
+  std::size_t* d = k <= 64 ? dims : (dimv.resize(k), dimv.data());
+  for (std::size_t j = 0; j < k; ++j) { d[j] = s.degrees[j] + 1; total += d[j]; }
+  w.mn.resize(total);
+  w.mx.resize(total);
+  double* mnp[64];
+  double* mxp[64];
+  std::vector<double*> mnv, mxv;
+  double** mn = k <= 64 ? mnp : (mnv.resize(k), mnv.data());
+  double** mx = k <= 64 ? mxp : (mxv.resize(k), mxv.data());
+  for (std::size_t j = 0, o = 0; j < k; o += d[j], ++j) { mn[j] = w.mn.data() + o; mx[j] = w.mx.data() + o; }
+  // each level of the halving takes at most 2 (size + 1) doubles
+  std::size_t levels = 1;
+  while ((std::size_t(1) << levels) < k) ++levels;
+  if (w.buffer.size() < 2 * (s.size + 1) * (levels + 1)) w.buffer.resize(2 * (s.size + 1) * (levels + 1));
+  w.used = 0;
+  marginal_extremes(L, H, d, k, mn, mx, w);
   double all_lo = std::numeric_limits<double>::infinity(), all_hi = -all_lo;
-  for (std::size_t a = 0; a < s.size; ++a) {
-    L[a] = Interval_ops<IT>::lower_double(b[a]);
-    H[a] = Interval_ops<IT>::upper_double(b[a]);
-    all_lo = (std::min)(all_lo, L[a]);
-    all_hi = (std::max)(all_hi, H[a]);
-  }
+  for (std::size_t i = 0; i < d[0]; ++i) { all_lo = (std::min)(all_lo, mn[0][i]); all_hi = (std::max)(all_hi, mx[0][i]); }
   if (!(all_lo <= 0 && all_hi >= 0)) return false;
-  std::vector<double> mn, mx;
-  for (std::size_t j = 0; j < k; ++j) {
-    const unsigned d = s.degrees[j];
-    const std::size_t st = s.strides[j], block = st * (d + 1);
-    mn.assign(d + 1, std::numeric_limits<double>::infinity());
-    mx.assign(d + 1, -std::numeric_limits<double>::infinity());
-    for (unsigned i = 0; i <= d; ++i) {
-      double m = mn[i], M = mx[i];
-      for (std::size_t outer = i * st; outer < s.size; outer += block)
-        for (std::size_t in = 0; in < st; ++in) {
-          m = (std::min)(m, L[outer + in]);
-          M = (std::max)(M, H[outer + in]);
-        }
-      mn[i] = m;
-      mx[i] = M;
-    }
-    if (!clip_polygon(d, mn.data(), mx.data(), tu[j], tv[j])) return false;
-  }
+  for (std::size_t j = 0; j < k; ++j)
+    if (!clip_polygon(s.degrees[j], mn[j], mx[j], tu[j], tv[j])) return false;
   return true;
+}
+
+// The same on an array of intervals.
+template <class IT>
+bool clip_axes(const Tensor_shape& s, const std::vector<IT>& b, std::vector<double>& tu, std::vector<double>& tv, Clip_workspace& w)
+{
+  w.L.resize(s.size);
+  w.H.resize(s.size);
+  for (std::size_t a = 0; a < s.size; ++a) {
+    w.L[a] = Interval_ops<IT>::lower_double(b[a]);
+    w.H[a] = Interval_ops<IT>::upper_double(b[a]);
+  }
+  return clip_bounds(s, w.L.data(), w.H.data(), tu, tv, w);
 }
 
 } // namespace internal

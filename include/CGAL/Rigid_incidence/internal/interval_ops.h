@@ -51,6 +51,16 @@ template <bool P> struct Interval_ops<CGAL::Interval_nt<P>>
     double m = 0.5 * lo + 0.5 * hi;
     return m > lo && m < hi;
   }
+  // (a + b) / 2 (the rounding upward: the lower bound is negated, halved, negated back, so
+  // that a halving that underflows still rounds outward)
+  static I half_sum(const I& a, const I& b)
+  {
+    if constexpr (P) return (a + b) / 2;
+    else {
+      const I s = a + b;
+      return I(-((-s.inf()) * 0.5), s.sup() * 0.5);
+    }
+  }
 };
 
 #ifdef CGAL_USE_MPFI
@@ -74,6 +84,7 @@ template <> struct Interval_ops<CGAL::Gmpfi>
     else return I(c);
   }
   static unsigned bits() { return unsigned(I::get_default_precision()); }
+  static I half_sum(const I& a, const I& b) { return (a + b) / 2; }
   static bool splittable(const Bound& lo, const Bound& hi)
   {
     I m = (I(lo) + I(hi)) / 2;
