@@ -21,6 +21,8 @@
 #include <CGAL/Rigid_incidence/Polynomial_system.h>
 #include <CGAL/Rigid_incidence/Solver_result.h>
 #include <CGAL/Rigid_incidence/Subdivision_solver.h>
+#include <CGAL/Rigid_incidence/Solution_plan.h>
+#include <CGAL/Rigid_incidence/solve_with_plan.h>
 #include <CGAL/Rigid_incidence/incidence_tree_parametrization.h>
 #include <CGAL/Rigid_incidence/Reduced_system.h>
 #include <CGAL/Rigid_incidence/Configuration.h>
@@ -28,5 +30,6 @@
 #include <CGAL/Rigid_incidence/naive_systems.h>
 #include <CGAL/Rigid_incidence/IO/read_scene.h>
 #include <CGAL/Rigid_incidence/IO/write_dot.h>
+#include <CGAL/Rigid_incidence/IO/write_plan.h>
 
 #endif

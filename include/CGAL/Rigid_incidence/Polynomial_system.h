@@ -253,11 +253,17 @@ struct Polynomial_system
   std::vector<std::pair<double, double>> box;        ///< per variable: [lower, upper] searched
   std::vector<Sparse_polynomial<NT>> equations;      ///< f_i = 0
   std::vector<std::string> labels;                   ///< per equation: where it comes from
+  /// Inequality constraints g_j >= 0 (optional): the solver discards boxes where some g_j < 0
+  /// certainly and marks a root where some g_j may be 0 (`Solver_root::on_inequality_boundary`).
+  std::vector<Sparse_polynomial<NT>> inequalities;
+  std::vector<std::string> inequality_labels;        ///< per inequality: where it comes from (optional)
 
   /// Number of variables.
   std::size_t number_of_variables() const { return variable_names.size(); }
   /// Number of equations.
   std::size_t number_of_equations() const { return equations.size(); }
+  /// Number of inequalities.
+  std::size_t number_of_inequalities() const { return inequalities.size(); }
 };
 
 } // namespace Rigid_incidence

@@ -97,6 +97,10 @@ struct Solver_root
   bool certified = false;
   /// the enclosure meets the boundary of the search box (the root may lie just outside it)
   bool on_boundary = false;
+  /// some inequality g_j >= 0 of the system may be 0 on the enclosure (the root is kept: it
+  /// satisfies the inequalities or lies on their boundary); roots where some g_j < 0 certainly
+  /// are not returned
+  bool on_inequality_boundary = false;
   /// an upper bound of max_i |f_i| over `enclosure`
   double residual = 0;
   /// the box in which the root is proved to be the only one (the Krawczyk box; contains
@@ -125,6 +129,8 @@ struct Solver_statistics
 {
   std::size_t boxes = 0;            ///< boxes visited
   std::size_t excluded = 0;         ///< boxes excluded by a strict sign of some equation
+  std::size_t excluded_by_inequality = 0; ///< boxes excluded because some inequality is < 0 on them
+  std::size_t rejected_roots = 0;   ///< certified roots left out because some inequality is < 0 there
   std::size_t splits = 0;           ///< boxes split in two
   std::size_t reductions = 0;       ///< domain reductions that shrank a box
   std::size_t krawczyk_tests = 0;   ///< existence / uniqueness tests

@@ -85,6 +85,30 @@ public:
     return run.result;
   }
 
+  /*!
+  Proves that `system` has exactly one root near `box` (in `box` widened by 10% of its width
+  and a few units in the last place, around a Newton estimate) and tightens its enclosure to
+  `parameters().tolerance`, like a root the solver finds; empty if the Krawczyk test fails there
+  or the root lies outside `system.box` (the inequalities are not looked at). For a root known approximately, or known in a wide
+  enclosure (a root assembled from the blocks of a `Solution_plan`).
+  \throws Input_error as `solve()`, or if `box` does not have one interval per variable.
+  */
+  template <class NT>
+  std::optional<Solver_root<IT>> refine(const Polynomial_system<NT>& system, const std::vector<IT>& box) const
+  {
+    check(system);
+    if (box.size() != system.number_of_variables())
+      throw Input_error("Subdivision_solver::refine: the box has " + std::to_string(box.size()) + " intervals for " +
+                        std::to_string(system.number_of_variables()) + " variables");
+    internal::Solver_precision_guard<IT> guard(p_.precision);
+    Run run(*this, system);
+    std::vector<Bound> lo, hi;
+    for (const IT& b : box) { lo.push_back(O::lower(b)); hi.push_back(O::upper(b)); }
+    typename Run::Node_type x = run.make_node(lo, hi, 0);
+    if (!run.certify(x) || run.found.empty()) return std::nullopt;
+    return run.found.back().root;
+  }
+
 private:
   struct Equation
   {
@@ -125,6 +149,10 @@ private:
         throw Input_error("Subdivision_solver: the interval of variable " + name(s, j) + " is not a nonempty finite interval [" +
                           std::to_string(b.first) + ", " + std::to_string(b.second) + "]");
     }
+    for (std::size_t i = 0; i < s.inequalities.size(); ++i)
+      if (s.inequalities[i].number_of_variables() != n)
+        throw Input_error("Subdivision_solver: inequality " + std::to_string(i) + " is in " +
+                          std::to_string(s.inequalities[i].number_of_variables()) + " variables, the system in " + std::to_string(n));
     for (std::size_t i = 0; i < n; ++i) {
       if (s.equations[i].number_of_variables() != n)
         throw Input_error("Subdivision_solver: equation " + std::to_string(i) + " is in " +
@@ -143,9 +171,11 @@ private:
   // One solve: the state shared by the steps.
   struct Run
   {
+    typedef Node Node_type;
     const Subdivision_solver_parameters& P;
     std::size_t n;
     std::vector<Equation> eq;
+    std::vector<Equation> ineq;           // g_j >= 0
     std::vector<Bound> dlo, dhi;          // the search box
     std::vector<double> initial_width;    // per variable
     double min_width;
@@ -176,6 +206,7 @@ private:
     Run(const Subdivision_solver& s, const Polynomial_system<NT>& sys) : P(s.p_), n(sys.number_of_variables())
     {
       for (const auto& f : sys.equations) eq.push_back(make_equation(f));
+      for (const auto& g : sys.inequalities) ineq.push_back(make_equation(g));
       std::vector<unsigned> dmax(n, 0);
       for (const auto& e : eq)
         for (std::size_t k = 0; k < e.shape.variables.size(); ++k) dmax[e.shape.variables[k]] = (std::max)(dmax[e.shape.variables[k]], e.shape.degrees[k]);
@@ -397,8 +428,21 @@ private:
       return false;
     }
 
+    // Some inequality g_j >= 0 fails on the whole box (its Bernstein coefficients are all < 0).
+    bool violates_inequality(const std::vector<Bound>& lo, const std::vector<Bound>& hi) const
+    {
+      for (const auto& g : ineq) {
+        std::vector<IT> b = bernstein(g, lo, hi);
+        bool neg = true;
+        for (const IT& c : b) if (!(O::upper(c) < 0)) { neg = false; break; }
+        if (neg) return true;
+      }
+      return false;
+    }
+
     void process(Node& x, std::vector<Node>& stack)
     {
+      if (!ineq.empty() && violates_inequality(x.lo, x.hi)) { ++result.statistics.excluded_by_inequality; return; }
       bool converging = false;
       for (int round = 0; round < 32; ++round) {
         if (excluded(x)) { ++result.statistics.excluded; return; }
@@ -604,7 +648,7 @@ private:
           const unsigned d = s.degrees[k];
           const std::size_t st = s.strides[k];
           bool first = true;
-          Bound mn, mx;
+          Bound mn = Bound(), mx = Bound();
           s.for_each_fiber(k, [&](std::size_t base) {
             for (unsigned a = 0; a < d; ++a) {
               IT diff = (b[i][base + (a + 1) * st] - b[i][base + a * st]) * IT(int(d));
@@ -705,10 +749,13 @@ private:
       bool inside, empty;
       if (!krawczyk(lo, hi, b, K, inside, empty)) return false;
       if (empty) return false;
-      if (!inside && last_contraction < 0.5) {
-        // epsilon-inflation (Rump): the box was too thin for K to fit; once more on the hull
-        // of the box and K, widened
+      for (int round = 0; round < 4 && !inside && last_contraction < 0.5; ++round) {
+        // epsilon-inflation (Rump): the box was too thin for K to fit; again on the hull of
+        // the box and K, widened, in the variables where K sticks out only: in a box the
+        // clipping made long in some variables and thin in others, K of a thin variable gathers
+        // the long ones' widths (through I - Y J), and widening those too would keep it out
         for (std::size_t j = 0; j < n; ++j) {
+          if (lo[j] < O::lower(K[j]) && O::upper(K[j]) < hi[j]) continue;
           Bound l = O::lower(K[j]) < lo[j] ? O::lower(K[j]) : lo[j], h = hi[j] < O::upper(K[j]) ? O::upper(K[j]) : hi[j];
           IT w = width_interval(l, h) * IT(0.5);
           lo[j] = O::lower(pt(l) - w);
@@ -940,7 +987,20 @@ private:
       }
       for (auto& u : cluster(pending_nodes, Box_class::PENDING)) result.unresolved.push_back(u);
       result.roots.clear();
-      for (auto& f : found) result.roots.push_back(f.root);
+      for (auto& f : found) {
+        // the inequalities on the root's enclosure: < 0 certainly: not a root we want
+        bool reject = false, boundary = false;
+        for (const auto& g : ineq) {
+          std::vector<IT> xl;
+          for (std::size_t v : g.shape.variables) xl.push_back(f.root.enclosure[v]);
+          IT v = internal::horner(g.shape, g.power, xl);
+          if (O::upper(v) < 0) reject = true;
+          else if (!(O::lower(v) >= 0)) boundary = true;
+        }
+        if (reject) { ++result.statistics.rejected_roots; continue; }
+        f.root.on_inequality_boundary = boundary;
+        result.roots.push_back(f.root);
+      }
       std::sort(result.roots.begin(), result.roots.end(), [](const Solver_root<IT>& a, const Solver_root<IT>& b) {
         return a.approximation < b.approximation;
       });

@@ -1,0 +1,285 @@
+// Copyright (c) 2026 Rigid_incidence contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Plan solving (decomposition_subdivision_solver.txt, Algorithm 6): the blocks of a
+// Solution_plan are solved one after the other, each root of a block substituted (as its
+// certified enclosure) into the blocks after it, branching over every root.
+
+#ifndef CGAL_RIGID_INCIDENCE_SOLVE_WITH_PLAN_H
+#define CGAL_RIGID_INCIDENCE_SOLVE_WITH_PLAN_H
+
+#include <CGAL/Rigid_incidence/Input_error.h>
+#include <CGAL/Rigid_incidence/Polynomial_system.h>
+#include <CGAL/Rigid_incidence/Solution_plan.h>
+#include <CGAL/Rigid_incidence/Solver_result.h>
+#include <CGAL/Rigid_incidence/Subdivision_solver.h>
+#include <CGAL/Rigid_incidence/internal/interval_ops.h>
+
+#include <algorithm>
+#include <chrono>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+namespace CGAL {
+namespace Rigid_incidence {
+
+/// \ingroup PkgRigidIncidenceSolver
+/// A solution of the whole system found by `solve_with_plan()`.
+template <class IT>
+struct Plan_root
+{
+  std::vector<IT> enclosure;          ///< per variable, an interval containing the root
+  std::vector<double> approximation;  ///< per variable, a point of the enclosure as a double
+  /// every block's root was certified: the system has exactly one root in the product of
+  /// the blocks' uniqueness boxes (block triangular: each block's proof holds for every value
+  /// of its inputs in their enclosures), and it lies in `enclosure`
+  bool certified = false;
+  bool on_boundary = false;             ///< some block's root meets the search box's boundary
+  bool on_inequality_boundary = false;  ///< some inequality may be 0 there
+};
+
+/// \ingroup PkgRigidIncidenceSolver
+/// A region of one block the solver could not decide, with the values of the blocks before it.
+template <class IT>
+struct Plan_unresolved
+{
+  std::size_t block = 0;           ///< index into `Solution_plan::blocks()`
+  Box_class kind = Box_class::UNKNOWN;  ///< `UNKNOWN` or `PENDING`
+  std::string reason;              ///< the block solver's reason
+  /// per variable: the enclosures of the variables solved before this block, the unresolved
+  /// box for this block's variables, the search box for the variables after it
+  std::vector<IT> box;
+};
+
+/// \ingroup PkgRigidIncidenceSolver
+/// The result of `solve_with_plan()`.
+template <class IT>
+struct Plan_result
+{
+  std::vector<Plan_root<IT>> roots;             ///< the roots of the whole system, sorted by approximation
+  std::vector<Plan_unresolved<IT>> unresolved;  ///< what a block left undecided
+  std::string diagnosis;               ///< the first block diagnosis met, if any
+  std::size_t block_solves = 0;        ///< sub-systems solved (a block once per combination of the roots before it)
+  std::size_t boxes = 0;               ///< boxes over all block solves
+  std::size_t krawczyk_tests = 0;      ///< Krawczyk tests over all block solves
+  std::size_t refinements = 0;         ///< roots tightened on the whole system
+  std::size_t refinements_failed = 0;  ///< of those, the ones whose whole-system Krawczyk test failed (the blocks' enclosure is kept)
+  double seconds = 0;                  ///< wall-clock time
+  /// every root certified and nothing unresolved
+  bool complete() const
+  {
+    if (!unresolved.empty()) return false;
+    for (const auto& r : roots) if (!r.certified) return false;
+    return true;
+  }
+};
+
+namespace internal {
+
+// f with the variables `known` replaced by their enclosures, as a polynomial in the block's
+// variables `local` (f's variables must all be known or in `local`).
+template <class IT, class NT>
+Sparse_polynomial<IT> restrict_polynomial(const Sparse_polynomial<NT>& f, const std::vector<std::size_t>& local, const std::vector<IT>& value,
+                                          const std::vector<char>& known)
+{
+  typedef Interval_ops<IT> O;
+  Sparse_polynomial<IT> r(local.size());
+  std::vector<std::size_t> where(f.number_of_variables(), std::size_t(-1));
+  for (std::size_t k = 0; k < local.size(); ++k) where[local[k]] = k;
+  for (const auto& t : f.terms()) {
+    IT c = O::from(t.second);
+    typename Sparse_polynomial<IT>::Exponent e(local.size(), 0);
+    for (std::size_t j = 0; j < t.first.size(); ++j) {
+      if (t.first[j] == 0) continue;
+      if (where[j] != std::size_t(-1)) e[where[j]] = t.first[j];
+      else {
+        CGAL_assertion(known[j]);
+        for (unsigned p = 0; p < t.first[j]; ++p) c = c * value[j];
+      }
+    }
+    r.add_term(e, c);
+  }
+  return r;
+}
+
+template <class IT, class NT> struct Plan_run
+{
+  typedef Interval_ops<IT> O;
+  const Polynomial_system<NT>& sys;
+  const Solution_plan& plan;
+  const Subdivision_solver_parameters& P;
+  Plan_result<IT> result;
+  std::vector<IT> value;
+  std::vector<char> known;
+  std::vector<char> certified_so_far, boundary_so_far, ineq_boundary_so_far;
+
+  Plan_run(const Polynomial_system<NT>& s, const Solution_plan& p, const Subdivision_solver_parameters& q)
+      : sys(s), plan(p), P(q), value(s.number_of_variables()), known(s.number_of_variables(), 0)
+  {
+  }
+
+  std::vector<IT> current_box(std::size_t b, const std::vector<IT>& local_box) const
+  {
+    std::vector<IT> box(sys.number_of_variables());
+    const auto& vars = plan.blocks()[b].variables;
+    for (std::size_t j = 0; j < box.size(); ++j) box[j] = known[j] ? value[j] : O::make(O::bound_from_double(sys.box[j].first), O::bound_from_double(sys.box[j].second));
+    for (std::size_t k = 0; k < vars.size() && k < local_box.size(); ++k) box[vars[k]] = local_box[k];
+    return box;
+  }
+
+  template <class CT> Solver_result<IT> solve_block(const Plan_block& blk, bool last)
+  {
+    Polynomial_system<CT> s;
+    for (std::size_t j : blk.variables) {
+      s.variable_names.push_back(j < sys.variable_names.size() ? sys.variable_names[j] : "x" + std::to_string(j));
+      s.box.push_back(sys.box[j]);
+    }
+    for (std::size_t i : blk.equations) {
+      if constexpr (std::is_same<CT, NT>::value) s.equations.push_back(restrict_exact(sys.equations[i], blk.variables));
+      else s.equations.push_back(restrict_polynomial<IT>(sys.equations[i], blk.variables, value, known));
+      s.labels.push_back(i < sys.labels.size() ? sys.labels[i] : std::string());
+    }
+    for (std::size_t q : blk.inequalities) {
+      if constexpr (std::is_same<CT, NT>::value) s.inequalities.push_back(restrict_exact(sys.inequalities[q], blk.variables));
+      else s.inequalities.push_back(restrict_polynomial<IT>(sys.inequalities[q], blk.variables, value, known));
+    }
+    for (const auto& f : s.equations)
+      if (f.is_zero())
+        throw Input_error("solve_with_plan: an equation of block " + std::to_string(&blk - &plan.blocks()[0]) +
+                          " vanishes identically once the values before it are substituted");
+    Subdivision_solver_parameters q = P;
+    // the roots of a block with blocks after it become their coefficients: tighter enclosures
+    // keep those coefficients narrow
+    if (!last) q.tolerance = P.tolerance * 1e-3;
+    return Subdivision_solver<IT>(q).solve(s);
+  }
+  // the same polynomial renumbered to the block's variables (exact: the block has no input)
+  static Sparse_polynomial<NT> restrict_exact(const Sparse_polynomial<NT>& f, const std::vector<std::size_t>& local)
+  {
+    Sparse_polynomial<NT> r(local.size());
+    for (const auto& t : f.terms()) {
+      typename Sparse_polynomial<NT>::Exponent e(local.size(), 0);
+      for (std::size_t k = 0; k < local.size(); ++k) e[k] = t.first[local[k]];
+      r.add_term(e, t.second);
+    }
+    return r;
+  }
+
+  void go(std::size_t b, bool certified, bool boundary, bool ineq_boundary)
+  {
+    if (b == plan.blocks().size()) {
+      Plan_root<IT> r;
+      r.enclosure = value;
+      if (certified && plan.blocks().size() > 1) {
+        // the blocks' enclosures carry the widths of the inputs through the chain (interval
+        // coefficients evaluated term by term): the Krawczyk test on the whole system, from
+        // their product, tightens the root to the tolerance (the root it proves unique in a
+        // box holding the product is the one the blocks proved there)
+        ++result.refinements;
+        if (auto t = Subdivision_solver<IT>(P).refine(sys, value)) r.enclosure = t->enclosure;
+        else ++result.refinements_failed;
+      }
+      for (const IT& v : value) r.approximation.push_back(0.5 * O::lower_double(v) + 0.5 * O::upper_double(v));
+      r.certified = certified;
+      r.on_boundary = boundary;
+      r.on_inequality_boundary = ineq_boundary;
+      result.roots.push_back(r);
+      return;
+    }
+    const Plan_block& blk = plan.blocks()[b];
+    const bool last = b + 1 == plan.blocks().size();
+    // exact coefficients while nothing before the block enters it (its equations and
+    // inequalities involve its own variables only)
+    bool own = true;
+    for (std::size_t i : blk.equations)
+      for (std::size_t j : sys.equations[i].variables()) own = own && std::binary_search(blk.variables.begin(), blk.variables.end(), j);
+    for (std::size_t q : blk.inequalities)
+      for (std::size_t j : sys.inequalities[q].variables()) own = own && std::binary_search(blk.variables.begin(), blk.variables.end(), j);
+    Solver_result<IT> res = own ? solve_block<NT>(blk, last) : solve_block<IT>(blk, last);
+    ++result.block_solves;
+    result.boxes += res.statistics.boxes;
+    result.krawczyk_tests += res.statistics.krawczyk_tests;
+    if (result.diagnosis.empty() && !res.diagnosis.empty()) result.diagnosis = "block " + std::to_string(b) + ": " + res.diagnosis;
+    for (const auto& u : res.unresolved) {
+      Plan_unresolved<IT> v;
+      v.block = b;
+      v.kind = u.kind;
+      v.reason = u.reason;
+      v.box = current_box(b, u.box);
+      result.unresolved.push_back(v);
+    }
+    for (const auto& r : res.roots) {
+      for (std::size_t k = 0; k < blk.variables.size(); ++k) {
+        value[blk.variables[k]] = r.enclosure[k];
+        known[blk.variables[k]] = 1;
+      }
+      go(b + 1, certified && r.certified, boundary || r.on_boundary, ineq_boundary || r.on_inequality_boundary);
+    }
+    for (std::size_t j : blk.variables) known[j] = 0;
+  }
+};
+
+} // namespace internal
+
+/*!
+\ingroup PkgRigidIncidenceSolver
+\brief Every real root of `system` in its box, solved block after block along `plan`
+(decomposition_subdivision_solver.txt, Algorithm 6).
+
+The blocks are solved in the plan's order. A block without inputs is solved with the
+system's own coefficients; the others with interval coefficients: each input replaced by the
+enclosure of the root it comes from (tightened to a thousandth of `parameters.tolerance`), so
+that the roots the block certifies are certified for every value of the inputs in their
+enclosures, and no root is lost at a block boundary. Each root of a block branches: the blocks
+after it are solved once per combination of the roots before them. Each block's inequalities
+(attached by `Solution_plan`, Algorithm 5) prune its boxes. Unresolved regions of a block are
+reported with the values of the blocks before it.
+
+\tparam IT the solver's interval type (`CGAL::Interval_nt<false>` or `CGAL::Gmpfi`).
+\throws Input_error if `plan` was not made for `system` (different sizes), if the system is
+not well-constrained (the over- or under-determined part is named), or if an equation
+vanishes identically after substitution.
+*/
+template <class IT = CGAL::Interval_nt<false>, class NT>
+Plan_result<IT> solve_with_plan(const Polynomial_system<NT>& system, const Solution_plan& plan,
+                                const Subdivision_solver_parameters& parameters = Subdivision_solver_parameters())
+{
+  if (plan.number_of_variables() != system.number_of_variables() || plan.number_of_equations() != system.number_of_equations())
+    throw Input_error("solve_with_plan: the plan is for " + std::to_string(plan.number_of_equations()) + " equations in " +
+                      std::to_string(plan.number_of_variables()) + " variables, the system has " + std::to_string(system.number_of_equations()) +
+                      " in " + std::to_string(system.number_of_variables()));
+  if (system.box.size() != system.number_of_variables())
+    throw Input_error("solve_with_plan: the box has " + std::to_string(system.box.size()) + " intervals for " +
+                      std::to_string(system.number_of_variables()) + " variables");
+  auto names = [&](const std::vector<std::size_t>& v, bool variables) {
+    std::string r;
+    for (std::size_t k = 0; k < v.size(); ++k) {
+      std::size_t j = v[k];
+      r += (k ? ", " : "") + (variables ? (j < system.variable_names.size() ? system.variable_names[j] : "x" + std::to_string(j))
+                                        : "equation " + std::to_string(j));
+    }
+    return r;
+  };
+  if (!plan.over_determined_equations().empty())
+    throw Input_error("solve_with_plan: the system is over-determined: " + names(plan.over_determined_equations(), false) +
+                      " (redundant or in conflict) in " + names(plan.over_determined_variables(), true));
+  if (!plan.under_determined_variables().empty())
+    throw Input_error("solve_with_plan: the system is under-determined (free variables " + names(plan.under_determined_variables(), true) +
+                      "): its solution set is not finite; curves are not traced by solve_with_plan");
+  for (std::size_t q : plan.unattached_inequalities())
+    throw Input_error("solve_with_plan: inequality " + std::to_string(q) + " involves a variable no block solves");
+  internal::Solver_precision_guard<IT> guard(parameters.precision);
+  internal::Plan_run<IT, NT> run(system, plan, parameters);
+  const auto start = std::chrono::steady_clock::now();
+  run.go(0, true, false, false);
+  run.result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::sort(run.result.roots.begin(), run.result.roots.end(),
+            [](const Plan_root<IT>& a, const Plan_root<IT>& b) { return a.approximation < b.approximation; });
+  return run.result;
+}
+
+} // namespace Rigid_incidence
+} // namespace CGAL
+
+#endif

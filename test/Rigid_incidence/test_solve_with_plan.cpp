@@ -1,0 +1,221 @@
+// Copyright (c) 2026 Rigid_incidence contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Plan solving (solve_with_plan, Algorithm 6 of decomposition_subdivision_solver.txt) and the
+// solver's inequalities, on random planted block-triangular systems (planted_systems.h): the
+// variables fall in random blocks; the factors of an equation involve its own block and the
+// blocks before it only, and the coupling A mixes equations within a block only, so the
+// system is block triangular. The oracle knows every real root exactly. For every system:
+//  - the plan solves it completely, every planted root in the box is in exactly one certified
+//    enclosure, no enclosure is spurious;
+//  - the undecomposed solver finds the same roots (the same count, approximations within 1e-8),
+//    or, where it runs out of boxes, a subset of them;
+//  - with a random affine inequality g >= 0 (no root on g = 0): exactly the planted roots with
+//    g > 0, with and without the plan;
+// and CGAL::Gmpfi as the interval type on a few systems; malformed input throws Input_error.
+// Usage: test_solve_with_plan [systems [seed]]
+
+#include "planted_systems.h"
+
+#include <CGAL/Rigid_incidence/Input_error.h>
+#include <CGAL/Rigid_incidence/Solution_plan.h>
+#include <CGAL/Rigid_incidence/Subdivision_solver.h>
+#include <CGAL/Rigid_incidence/solve_with_plan.h>
+
+#include <cstdlib>
+#include <iostream>
+#include <string>
+
+using namespace planted_systems;
+
+// Every planted root of `p` strictly inside the box with g > 0 (g empty: no inequality).
+static std::vector<Point> expected_roots(const Planted& p, const Affine* g)
+{
+  std::vector<Point> r;
+  for (const auto& x : p.roots)
+    if (in_box(x.x, p.system.box) && (!g || (*g)(x.x) > 0)) r.push_back(x.x);
+  return r;
+}
+
+template <class Root>
+static void check_roots(const std::vector<Root>& roots, const std::vector<Point>& expected, const std::string& name)
+{
+  CHECK(roots.size() == expected.size(), name << ": " << roots.size() << " roots, expected " << expected.size());
+  for (const auto& x : expected) {
+    int in = 0;
+    for (const auto& r : roots) {
+      Q_box b;
+      if (exact_box(r.enclosure, b) && contains(b, x)) ++in;
+    }
+    CHECK(in == 1, name << ": planted root " << point_string(x) << " is in " << in << " enclosures");
+  }
+  for (const auto& r : roots) {
+    Q_box b;
+    CHECK(exact_box(r.enclosure, b), name << ": an enclosure is not a valid box");
+    CHECK(r.certified, name << ": a root is not certified " << box_string(b));
+    CHECK(max_width(b) <= Q(1e-9), name << ": an enclosure is " << CGAL::to_double(max_width(b)) << " wide");
+  }
+}
+
+int main(int argc, char** argv)
+{
+  const int systems = argc > 1 ? std::atoi(argv[1]) : 120;
+  const std::uint64_t seed = argc > 2 ? std::strtoull(argv[2], nullptr, 10) : 20261123;
+  std::cout << "test_solve_with_plan: seed " << seed << ", " << systems << " systems\n";
+  Rng rng(seed);
+  std::size_t solved = 0, roots = 0, blocks = 0, plan_boxes = 0, plain_boxes = 0, plan_boxes_compared = 0, undecomposed_incomplete = 0, refinements = 0, refinements_failed = 0, kept = 0, gmpfi_runs = 0;
+  for (int s = 0; s < systems; ++s) {
+    // blocks of 1 to 3 variables, 2 to 6 variables in all
+    const std::size_t n = std::size_t(rng.uniform(2, 6));
+    std::vector<std::size_t> block_of(n);
+    std::vector<std::vector<std::size_t>> members;
+    for (std::size_t j = 0; j < n;) {
+      std::size_t size = (std::min)(n - j, std::size_t(rng.uniform(1, 3)));
+      members.emplace_back();
+      for (std::size_t k = 0; k < size; ++k, ++j) { block_of[j] = members.size() - 1; members.back().push_back(j); }
+    }
+    std::vector<std::vector<Affine>> factors(n);
+    for (std::size_t j = 0; j < n; ++j) {
+      const unsigned degree = unsigned(rng.uniform(1, 3));
+      for (const Q& r : distinct_rationals(rng, degree, Q(-3, 2), Q(3, 2), 8)) {
+        Affine a = coordinate_form(n, j, r);
+        for (std::size_t k = 0; k < n; ++k)
+          if (k != j && block_of[k] <= block_of[j] && rng.coin()) a.c[k] = rng.rational(3, 4) / Q(2);
+        factors[j].push_back(a);
+      }
+    }
+    std::vector<std::vector<Q>> A(n, std::vector<Q>(n, Q(0)));
+    for (const auto& m : members) {
+      auto B = random_invertible(rng, m.size());
+      for (std::size_t a = 0; a < m.size(); ++a)
+        for (std::size_t b = 0; b < m.size(); ++b) A[m[a]][m[b]] = B[a][b];
+    }
+    Planted p;
+    if (!make_planted(factors, A, cube(n, -2, 2), p)) continue;  // not zero-dimensional, or a singular root
+    // no root near the box's faces (a root just outside may come back flagged on_boundary)
+    bool near_face = false;
+    for (const auto& x : p.roots)
+      for (std::size_t i = 0; i < n; ++i) {
+        double d = (std::min)(std::abs(CGAL::to_double(x.x[i]) - 2), std::abs(CGAL::to_double(x.x[i]) + 2));
+        if (d < 1e-6) near_face = true;
+      }
+    if (near_face) continue;
+    const std::string name = "system " + std::to_string(s) + " (" + std::to_string(n) + " variables)";
+    RI::Solution_plan plan(p.system);
+    CHECK(plan.structure() == RI::Solution_plan::WELL_CONSTRAINED, name << ": not well-constrained");
+    CHECK(plan.blocks().size() >= members.size(), name << ": " << plan.blocks().size() << " blocks, planted " << members.size());
+    blocks += plan.blocks().size();
+    ++solved;
+
+    const std::vector<Point> all = expected_roots(p, nullptr);
+    roots += all.size();
+    auto pr = RI::solve_with_plan(p.system, plan);
+    CHECK(pr.complete(), name << ": the plan's solve is not complete");
+    check_roots(pr.roots, all, name + " with the plan");
+    plan_boxes += pr.boxes;
+    refinements += pr.refinements;
+    refinements_failed += pr.refinements_failed;
+    // the undecomposed solver (costly beyond 4 variables: every tenth system there)
+    const bool undecomposed = n <= 4 || s % 10 == 0;
+    if (undecomposed) {
+      auto whole = RI::Subdivision_solver<>().solve(p.system);
+      plain_boxes += whole.statistics.boxes;
+      plan_boxes_compared += pr.boxes;
+      if (!whole.complete()) {
+        // the undecomposed solver ran out of boxes: its roots must still be among the plan's
+        ++undecomposed_incomplete;
+        CHECK(whole.roots.size() <= pr.roots.size(), name << ": undecomposed " << whole.roots.size() << " roots, plan " << pr.roots.size());
+      } else
+      CHECK(whole.roots.size() == pr.roots.size(), name << ": undecomposed " << whole.roots.size() << " roots, plan " << pr.roots.size());
+      for (const auto& w : whole.roots) {
+        int same = 0;
+        for (const auto& r : pr.roots) {
+          bool close = true;
+          for (std::size_t j = 0; j < n; ++j) close = close && std::abs(w.approximation[j] - r.approximation[j]) < 1e-8;
+          same += close;
+        }
+        CHECK(same == 1, name << ": a root of the undecomposed solver is near " << same << " roots of the plan");
+      }
+    }
+
+    // an affine inequality g >= 0, away from every root
+    Affine g;
+    g.c.assign(n, Q(0));
+    for (std::size_t j = 0; j < n; ++j) g.c[j] = rng.rational(3, 2);
+    g.c0 = rng.rational(1, 4);
+    bool on_g = false;
+    for (const auto& x : p.roots) if (CGAL::abs(g(x.x)) < Q(1, 1000000)) on_g = true;
+    if (!on_g) {
+      RI::Polynomial_system<Q> q = p.system;
+      q.inequalities.push_back(affine_poly(g));
+      RI::Solution_plan qplan(q, {q.inequalities[0].variables()});
+      const std::vector<Point> want = expected_roots(p, &g);
+      kept += want.size();
+      auto qr = RI::solve_with_plan(q, qplan);
+      CHECK(qr.complete(), name << ": the plan's solve with an inequality is not complete");
+      check_roots(qr.roots, want, name + " with the plan and g >= 0");
+      if (undecomposed) {
+        auto qw = RI::Subdivision_solver<>().solve(q);
+        CHECK(qw.complete(), name << ": the solve with an inequality is not complete");
+        check_roots(qw.roots, want, name + " with g >= 0");
+        CHECK(qw.roots.size() + qw.statistics.rejected_roots <= all.size(),
+              name << ": " << qw.roots.size() << " kept + " << qw.statistics.rejected_roots << " rejected > " << all.size());
+      }
+    }
+#ifdef CGAL_USE_MPFI
+    if (s % 20 == 0) {
+      RI::Subdivision_solver_parameters prm;
+      prm.precision = 80;
+      auto gr = RI::solve_with_plan<CGAL::Gmpfi>(p.system, plan, prm);
+      CHECK(gr.complete(), name << ": the plan's solve in Gmpfi is not complete");
+      check_roots(gr.roots, all, name + " with the plan in Gmpfi");
+      ++gmpfi_runs;
+    }
+#endif
+  }
+  CHECK(solved >= std::size_t(systems) / 2, "only " << solved << " systems were usable");
+  CHECK(refinements_failed * 100 <= refinements, refinements_failed << " of " << refinements << " whole-system refinements failed");
+
+  // malformed input
+  {
+    RI::Polynomial_system<Q> s;
+    s.variable_names = {"x", "y"};
+    s.box = cube(2, -1, 1);
+    auto x = Poly::variable(2, 0), y = Poly::variable(2, 1);
+    s.equations = {x * x - Poly::constant(2, Q(1, 4)), x * y - Poly::constant(2, Q(1, 8))};
+    RI::Solution_plan plan(s);
+    CHECK(plan.blocks().size() == 2, "x^2 = 1/4, xy = 1/8: two blocks, got " << plan.blocks().size());
+    auto r = RI::solve_with_plan(s, plan);
+    CHECK(r.roots.size() == 2 && r.complete(), "x^2 = 1/4, xy = 1/8: " << r.roots.size() << " roots");
+    RI::Polynomial_system<Q> t = s;
+    t.equations.push_back(x + y);
+    t.variable_names.push_back("z");
+    t.box.push_back({-1, 1});
+    for (auto& f : t.equations) {
+      Poly g(3);
+      for (const auto& term : f.terms()) { auto e = term.first; e.push_back(0); g.add_term(e, term.second); }
+      f = g;
+    }
+    std::string what;
+    try { RI::solve_with_plan(t, plan); } catch (const RI::Input_error& e) { what = e.what(); }
+    CHECK(what.find("the plan is for 2 equations") != std::string::npos, "a plan of another system: " << what);
+    // 3 equations in x, y (z unused): over- and under-determined parts named
+    what.clear();
+    try { RI::solve_with_plan(t, RI::Solution_plan(t)); } catch (const RI::Input_error& e) { what = e.what(); }
+    CHECK(what.find("over-determined") != std::string::npos && what.find("equation 0") != std::string::npos,
+          "over-determined system: " << what);
+    // x^2 = 1/4, x + y = 0 in x, y, z: z is free
+    RI::Polynomial_system<Q> u = t;
+    u.equations = {t.equations[0], Poly::variable(3, 0) + Poly::variable(3, 1)};
+    what.clear();
+    try { RI::solve_with_plan(u, RI::Solution_plan(u)); } catch (const RI::Input_error& e) { what = e.what(); }
+    CHECK(what.find("under-determined") != std::string::npos && what.find("z") != std::string::npos, "under-determined system: " << what);
+  }
+
+  std::cout << solved << " systems, " << roots << " roots in the boxes, " << blocks << " blocks; boxes with the plan " << plan_boxes
+            << " (" << plan_boxes_compared << " on the systems also solved undecomposed, which took " << plain_boxes
+            << " and ran out of boxes on " << undecomposed_incomplete << "); " << refinements << " roots refined on the whole system ("
+            << refinements_failed << " failed); " << kept << " roots kept by the inequalities; " << gmpfi_runs << " Gmpfi runs\n";
+  std::cout << checks << " checks, " << failures << " failures\n";
+  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
