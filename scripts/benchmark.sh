@@ -29,3 +29,9 @@ cat "$build/results/reduced_system.md"
 "$build/benchmark/Rigid_incidence/benchmark_solver" "$build/results/solver" 3 20 60
 echo
 cat "$build/results/solver.md"
+# Solving along a solution plan against the whole system, with and without inequalities: the
+# paper's parallelogram and random block-triangular systems of 4 to 30 variables (2 seeds, the
+# whole-system solve capped at 10 s); also writes plan.svg.
+"$build/benchmark/Rigid_incidence/benchmark_plan" "$build/results/plan" 2 10 30
+echo
+cat "$build/results/plan.md"

@@ -13,6 +13,7 @@
 
 #include "reduce_command.h"
 #include "solve_command.h"
+#include "system_command.h"
 
 #include <chrono>
 
@@ -34,6 +35,8 @@ static const char* usage_text =
   "                         [--coefficients auto|exact|interval] [--kernel exact|epick|epeck]\n"
   "  rigid_incidence solve SCENE.json [--json] [--tolerance EPS] [--precision BITS] [--fast]\n"
   "                        [--svg FILE] [--near CONFIG.json] [--max-boxes N] [--kernel K]\n"
+  "  rigid_incidence solve-system FILE [--json] [--tolerance EPS] [--precision BITS] [--fast]\n"
+  "                        [--max-boxes N] [--dot FILE] [--no-plan]\n"
   "  rigid_incidence --help\n"
   "\n"
   "Commands:\n"
@@ -82,6 +85,25 @@ static const char* usage_text =
   "            max_residual}], unresolved [{class, reason, box, boxes, charts, points}],\n"
   "            stats}. A scene that is read exits 0 whatever was found.\n"
   "\n"
+  "  solve-system  Every real root of a polynomial system in a box. FILE is PHCpack's input\n"
+  "            format (the number of equations [and of variables], then the polynomials, each\n"
+  "            ending with ';'; coefficients read exactly, '^' or '**' for powers), followed\n"
+  "            by optional lines PHCpack ignores: 'box NAME LO HI', 'box * LO HI' (default\n"
+  "            [-10, 10] for every variable) and 'inequality EXPR >= 0;'. The system is\n"
+  "            decomposed into blocks (its solution plan: matching, strongly connected\n"
+  "            components, Dulmage-Mendelsohn parts when it is not square) solved one after\n"
+  "            the other, each root substituted as a certified enclosure into the blocks after\n"
+  "            it, then refined on the whole system. --dot FILE: the plan in Graphviz DOT;\n"
+  "            --no-plan: solve the whole system at once (for comparison). --json: {system,\n"
+  "            title, variables, box, default_box, plan {structure, blocks [{equations,\n"
+  "            variables, inputs, inequalities, depends_on, dimension}], order, left_out,\n"
+  "            over_determined, under_determined}, complete, diagnosis, solutions [{certified,\n"
+  "            values {variable: value}, enclosure {variable: [lo, hi]}, on_boundary,\n"
+  "            on_inequality_boundary}], unresolved [{class, reason, block, box}], curves,\n"
+  "            stats}. Systems that are not well-constrained are read and their plan printed,\n"
+  "            with a diagnosis naming the free variables or the conflicting equations (curves\n"
+  "            of one-degree-of-freedom systems are not traced yet).\n"
+  "\n"
   "Options:\n"
   "  --json         print the analysis as JSON on standard output instead of text; keys:\n"
   "                 scene, bodies (each with name, origin, points, sources, placements),\n"
@@ -117,6 +139,7 @@ struct Options
   std::string scene, dot, dot_seam, kernel = "exact";
   std::string charts, form, coefficients;
   bool json = false;
+  bool no_plan = false;
   solve_command::Solve_options solve;
 };
 
@@ -449,18 +472,25 @@ int main(int argc, char** argv)
   std::vector<std::string> args(argv + 1, argv + argc);
   if (args.empty()) { std::cerr << usage_text; return 1; }
   if (args[0] == "--help" || args[0] == "-h" || args[0] == "help") { std::cout << usage_text; return 0; }
-  if (args[0] != "analyze" && args[0] != "reduce" && args[0] != "solve") { std::cerr << "rigid_incidence: unknown command '" << args[0] << "' (see --help)\n"; return 1; }
+  if (args[0] != "analyze" && args[0] != "reduce" && args[0] != "solve" && args[0] != "solve-system") { std::cerr << "rigid_incidence: unknown command '" << args[0] << "' (see --help)\n"; return 1; }
   Options o;
   o.command = args[0];
   for (std::size_t i = 1; i < args.size(); ++i) {
     const std::string& a = args[i];
     if (a == "--json") o.json = true;
-    else if (a == "--fast") {
-      if (o.command != "solve") { std::cerr << "rigid_incidence: --fast is an option of solve\n"; return 1; }
+    else if (a == "--no-plan") {
+      if (o.command != "solve-system") { std::cerr << "rigid_incidence: --no-plan is an option of solve-system\n"; return 1; }
+      o.no_plan = true;
+    } else if (a == "--fast") {
+      if (o.command != "solve" && o.command != "solve-system") { std::cerr << "rigid_incidence: --fast is an option of solve\n"; return 1; }
       o.solve.fast = true;
     } else if (a == "--tolerance" || a == "--precision" || a == "--svg" || a == "--near" || a == "--max-boxes") {
       if (i + 1 >= args.size()) { std::cerr << "rigid_incidence: " << a << " needs a value\n"; return 1; }
-      if (o.command != "solve") { std::cerr << "rigid_incidence: " << a << " is an option of solve\n"; return 1; }
+      const bool system_option = a != "--svg" && a != "--near";
+      if (o.command != "solve" && !(system_option && o.command == "solve-system")) {
+        std::cerr << "rigid_incidence: " << a << " is an option of solve" << (system_option ? " and solve-system" : "") << "\n";
+        return 1;
+      }
       const std::string& v = args[++i];
       try {
         if (a == "--tolerance") o.solve.tolerance = solve_command::parse_positive(a, v);
@@ -486,7 +516,7 @@ int main(int argc, char** argv)
         std::cerr << "rigid_incidence: " << a << " is an option of reduce\n";
         return 1;
       }
-      if ((a == "--dot" || a == "--dot-seam") && o.command != "analyze") {
+      if ((a == "--dot" || a == "--dot-seam") && o.command != "analyze" && !(a == "--dot" && o.command == "solve-system")) {
         std::cerr << "rigid_incidence: " << a << " is an option of analyze\n";
         return 1;
       }
@@ -496,8 +526,16 @@ int main(int argc, char** argv)
     else if (o.scene.empty()) o.scene = a;
     else { std::cerr << "rigid_incidence: more than one scene given ('" << a << "')\n"; return 1; }
   }
-  if (o.scene.empty()) { std::cerr << "rigid_incidence: " << o.command << " needs a scene file\n"; return 1; }
+  if (o.scene.empty()) { std::cerr << "rigid_incidence: " << o.command << " needs a " << (o.command == "solve-system" ? "system" : "scene") << " file\n"; return 1; }
   try {
+    if (o.command == "solve-system") {
+      system_command::System_options so;
+      so.solve = o.solve;
+      so.json = o.json;
+      so.no_plan = o.no_plan;
+      so.dot = o.dot;
+      return system_command::solve_system(o.scene, so);
+    }
     if (o.kernel == "exact") return analyze<RI::Rigid_incidence_traits<CGAL::Simple_cartesian<CGAL::Gmpq>>>(o);
     if (o.kernel == "epick") return analyze<RI::Rigid_incidence_traits<CGAL::Exact_predicates_inexact_constructions_kernel>>(o);
     if (o.kernel == "epeck") return analyze<RI::Rigid_incidence_traits<CGAL::Exact_predicates_exact_constructions_kernel>>(o);

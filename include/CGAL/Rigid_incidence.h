@@ -30,6 +30,7 @@
 #include <CGAL/Rigid_incidence/naive_systems.h>
 #include <CGAL/Rigid_incidence/IO/read_scene.h>
 #include <CGAL/Rigid_incidence/IO/write_dot.h>
+#include <CGAL/Rigid_incidence/IO/read_polynomial_system.h>
 #include <CGAL/Rigid_incidence/IO/write_plan.h>
 
 #endif

@@ -273,6 +273,44 @@ inline std::vector<std::vector<Affine>> shared_point_factors(Rng& rng, const std
   return f;
 }
 
+// block triangular: the variables fall in consecutive blocks of 1 to 3; factor m of equation j
+// is x_j - r_jm plus random multiples of the other variables of its block (each with
+// probability 1/2) and of variables of the blocks before it: each with probability 1/2 when
+// `earlier` < 0, else `earlier` random ones (smaller multiples: the roots stay in a box of
+// moderate size as n grows). A (returned) mixes the equations within each block only, so
+// f = A g is block triangular. `members` gets the blocks.
+inline std::vector<std::vector<Affine>> block_triangular_factors(Rng& rng, const std::vector<unsigned>& degrees, int earlier,
+                                                                 std::vector<std::vector<std::size_t>>& members, std::vector<std::vector<Q>>& A)
+{
+  const std::size_t n = degrees.size();
+  std::vector<std::size_t> block_of(n);
+  members.clear();
+  for (std::size_t j = 0; j < n;) {
+    std::size_t size = (std::min)(n - j, std::size_t(rng.uniform(1, 3)));
+    members.emplace_back();
+    for (std::size_t k = 0; k < size; ++k, ++j) { block_of[j] = members.size() - 1; members.back().push_back(j); }
+  }
+  std::vector<std::vector<Affine>> f(n);
+  for (std::size_t j = 0; j < n; ++j)
+    for (const Q& r : distinct_rationals(rng, degrees[j], Q(-3, 2), Q(3, 2), 8)) {
+      Affine a = coordinate_form(n, j, r);
+      for (std::size_t k = 0; k < n; ++k) {
+        const bool before = block_of[k] < block_of[j];
+        if (k != j && (block_of[k] == block_of[j] || (before && earlier < 0)) && rng.coin()) a.c[k] = rng.rational(3, 4) / Q(2);
+      }
+      for (int t = 0; t < earlier && block_of[j] > 0; ++t)
+        a.c[std::size_t(rng.uniform(0, long(members[block_of[j] - 1].back())))] = rng.rational(3, 4) / Q(4);
+      f[j].push_back(a);
+    }
+  A.assign(n, std::vector<Q>(n, Q(0)));
+  for (const auto& m : members) {
+    auto B = random_invertible(rng, m.size());
+    for (std::size_t a = 0; a < m.size(); ++a)
+      for (std::size_t b = 0; b < m.size(); ++b) A[m[a]][m[b]] = B[a][b];
+  }
+  return f;
+}
+
 // the factors after the change of coordinates x = M y + t
 inline std::vector<std::vector<Affine>> change_coordinates(const std::vector<std::vector<Affine>>& f,
                                                            const std::vector<std::vector<Q>>& M, const Point& t)

@@ -65,31 +65,13 @@ int main(int argc, char** argv)
   Rng rng(seed);
   std::size_t solved = 0, roots = 0, blocks = 0, plan_boxes = 0, plain_boxes = 0, plan_boxes_compared = 0, undecomposed_incomplete = 0, refinements = 0, refinements_failed = 0, kept = 0, gmpfi_runs = 0;
   for (int s = 0; s < systems; ++s) {
-    // blocks of 1 to 3 variables, 2 to 6 variables in all
+    // blocks of 1 to 3 variables, 2 to 6 variables in all, 1 to 3 factors per equation
     const std::size_t n = std::size_t(rng.uniform(2, 6));
-    std::vector<std::size_t> block_of(n);
+    std::vector<unsigned> degrees(n);
+    for (auto& d : degrees) d = unsigned(rng.uniform(1, 3));
     std::vector<std::vector<std::size_t>> members;
-    for (std::size_t j = 0; j < n;) {
-      std::size_t size = (std::min)(n - j, std::size_t(rng.uniform(1, 3)));
-      members.emplace_back();
-      for (std::size_t k = 0; k < size; ++k, ++j) { block_of[j] = members.size() - 1; members.back().push_back(j); }
-    }
-    std::vector<std::vector<Affine>> factors(n);
-    for (std::size_t j = 0; j < n; ++j) {
-      const unsigned degree = unsigned(rng.uniform(1, 3));
-      for (const Q& r : distinct_rationals(rng, degree, Q(-3, 2), Q(3, 2), 8)) {
-        Affine a = coordinate_form(n, j, r);
-        for (std::size_t k = 0; k < n; ++k)
-          if (k != j && block_of[k] <= block_of[j] && rng.coin()) a.c[k] = rng.rational(3, 4) / Q(2);
-        factors[j].push_back(a);
-      }
-    }
-    std::vector<std::vector<Q>> A(n, std::vector<Q>(n, Q(0)));
-    for (const auto& m : members) {
-      auto B = random_invertible(rng, m.size());
-      for (std::size_t a = 0; a < m.size(); ++a)
-        for (std::size_t b = 0; b < m.size(); ++b) A[m[a]][m[b]] = B[a][b];
-    }
+    std::vector<std::vector<Q>> A;
+    const auto factors = block_triangular_factors(rng, degrees, -1, members, A);
     Planted p;
     if (!make_planted(factors, A, cube(n, -2, 2), p)) continue;  // not zero-dimensional, or a singular root
     // no root near the box's faces (a root just outside may come back flagged on_boundary)

@@ -180,6 +180,9 @@ private:
   std::size_t match(std::size_t skip, std::vector<std::size_t>& mate_eq, std::vector<std::size_t>& mate_var) const
   {
     const std::size_t m = eqv_.size();
+    mate_eq.assign(m, none);
+    mate_var.assign(k_, none);
+    if (m == 0 || k_ == 0) return 0;
     Bipartite g(m + k_);
     for (std::size_t i = 0; i < m; ++i)
       for (std::size_t j : eqv_[i])
@@ -187,8 +190,6 @@ private:
     std::vector<Bipartite::vertex_descriptor> mate(m + k_);
     boost::edmonds_maximum_cardinality_matching(g, &mate[0]);
     const auto null = boost::graph_traits<Bipartite>::null_vertex();
-    mate_eq.assign(m, none);
-    mate_var.assign(k_, none);
     std::size_t size = 0;
     for (std::size_t i = 0; i < m; ++i)
       if (mate[i] != null) {

@@ -332,3 +332,35 @@ if(TARGET rigid_incidence)
            COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${_ri_d}/bar_end.json|--json" -DEXPECT_RC=0
                    "-DEXPECT_STDOUT=\"complete\": false&&\"diagnosis\": \"under_constrained: " -P ${_ri_cli_script})
 endif()
+
+# --- solve-system: a polynomial system in PHCpack's format plus box and inequality lines (issue
+# 7), solved along its solution plan. The parallelogram with a diagonal of van Sosin and Elber
+# (Section 4): 4 real solutions, 1 with the two inequalities; the values are the paper's.
+if(TARGET rigid_incidence)
+  set(_ri_sys ${RIGID_INCIDENCE_DATA_DIR}/systems)
+  add_test(NAME cli_solve_system_parallelogram
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve-system|${_ri_sys}/parallelogram.txt" -DEXPECT_RC=0
+                   "-DEXPECT_STDOUT=4 equations in 4 variables, well_constrained; 2 block\\(s\\), the largest solves 2&&block 0: solve equation 1, equation 2 for Ax, Ay\n&&block 1: solve equation 3, equation 4 for Bx, By given Ax, Ay&&4 real root\\(s\\) in the box, 4 certified; complete&&Ax = -1.36[0-9]* Ay = 0.8248[0-9]* Bx = 0.64[0-9]* By = 0.8248"
+                   -P ${_ri_cli_script})
+  add_test(NAME cli_solve_system_parallelogram_inequalities
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve-system|${_ri_sys}/parallelogram_ineq.txt" -DEXPECT_RC=0
+                   "-DEXPECT_STDOUT=2 inequalities&&1 real root\\(s\\) in the box, 1 certified; complete&&1 certified: Ax = -1.36[0-9]* Ay = 0.8248[0-9]* Bx = 0.64[0-9]* By = 0.8248"
+                   -P ${_ri_cli_script})
+  add_test(NAME cli_solve_system_no_plan
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve-system|${_ri_sys}/parallelogram.txt|--no-plan" -DEXPECT_RC=0
+                   "-DEXPECT_STDOUT=4 real root\\(s\\) in the box, 4 certified; complete&&stats: 1 block solve" -P ${_ri_cli_script})
+  add_test(NAME cli_solve_system_json
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve-system|${_ri_sys}/parallelogram_ineq.txt|--json" -DEXPECT_RC=0
+                   "-DEXPECT_STDOUT=\"structure\": \"well_constrained\"&&\"blocks\": &&\"Ax\",&&\"complete\": true&&\"certified\": true&&\"curves\": &&\"block_solves\": 2"
+                   -P ${_ri_cli_script})
+  add_test(NAME cli_solve_system_dot
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve-system|${_ri_sys}/parallelogram.txt|--dot|${CMAKE_CURRENT_BINARY_DIR}/cli_plan.dot" -DEXPECT_RC=0
+                   "-DCHECK_FILE=${CMAKE_CURRENT_BINARY_DIR}/cli_plan.dot"
+                   "-DCHECK_FILE_REGEX=^digraph plan&&subgraph cluster_0&&subgraph cluster_1&&style=bold" -P ${_ri_cli_script})
+  add_test(NAME cli_solve_system_missing_file
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve-system|${CMAKE_CURRENT_BINARY_DIR}/no_such_system.txt" -DEXPECT_RC=2
+                   "-DEXPECT_STDERR=rigid_incidence: error: .*no_such_system.txt" -P ${_ri_cli_script})
+  add_test(NAME cli_solve_system_rejects_svg
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve-system|${_ri_sys}/parallelogram.txt|--svg|x.svg" -DEXPECT_RC=1
+                   "-DEXPECT_STDERR=--svg is an option of solve" -P ${_ri_cli_script})
+endif()

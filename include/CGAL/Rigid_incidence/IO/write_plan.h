@@ -25,7 +25,7 @@ inline std::string plan_name(const std::vector<std::string>& names, std::size_t 
 inline std::string plan_list(const std::vector<std::size_t>& v, const std::vector<std::string>& names, const char* prefix)
 {
   std::string r;
-  for (std::size_t k = 0; k < v.size(); ++k) r += (k ? " " : "") + plan_name(names, v[k], prefix);
+  for (std::size_t k = 0; k < v.size(); ++k) r += (k ? ", " : "") + plan_name(names, v[k], prefix);
   return r;
 }
 inline const char* plan_structure_name(Solution_plan::Structure s)

@@ -1,0 +1,195 @@
+// Copyright (c) 2026 Rigid_incidence contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// `rigid_incidence solve-system`: every real root of a polynomial system given as text
+// (PHCpack's input format plus box and inequality lines), solved along its solution plan.
+
+#ifndef RIGID_INCIDENCE_EXAMPLES_SYSTEM_COMMAND_H
+#define RIGID_INCIDENCE_EXAMPLES_SYSTEM_COMMAND_H
+
+#include <CGAL/Rigid_incidence.h>
+#include <CGAL/Rigid_incidence/IO/read_polynomial_system.h>
+#include <CGAL/Rigid_incidence/IO/write_plan.h>
+
+#include <nlohmann/json.hpp>
+
+#include "solve_command.h"
+
+#include <chrono>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace system_command {
+
+namespace RI = CGAL::Rigid_incidence;
+
+struct System_options
+{
+  solve_command::Solve_options solve;  // tolerance, precision, fast, max_boxes
+  bool json = false;
+  bool no_plan = false;  // solve the whole system at once (for comparison)
+  std::string dot;       // write the plan in Graphviz DOT here
+};
+
+template <class IT>
+nlohmann::ordered_json interval_json(const IT& x)
+{
+  typedef RI::internal::Interval_ops<IT> O;
+  return nlohmann::ordered_json::array({O::lower_double(x), O::upper_double(x)});
+}
+
+template <class IT>
+int run(const RI::Polynomial_system_file& file, const RI::Solution_plan& plan, const System_options& o, const std::string& path,
+        double read_seconds)
+{
+  const RI::Polynomial_system<CGAL::Gmpq>& sys = file.system;
+  RI::Subdivision_solver_parameters p;
+  p.tolerance = o.solve.tolerance;
+  p.precision = o.solve.precision;
+  p.fast = o.solve.fast;
+  if (o.solve.max_boxes > 0) p.maximal_boxes = o.solve.max_boxes;
+  const auto t0 = std::chrono::steady_clock::now();
+  std::string diagnosis;
+  RI::Plan_result<IT> r;
+  if (o.no_plan) {
+    // the undecomposed solver, in the same result shape
+    auto s = RI::Subdivision_solver<IT>(p).solve(sys);
+    r.block_solves = 1;
+    r.boxes = s.statistics.boxes;
+    r.krawczyk_tests = s.statistics.krawczyk_tests;
+    r.diagnosis = s.diagnosis;
+    for (const auto& x : s.roots) {
+      RI::Plan_root<IT> y;
+      y.enclosure = x.enclosure;
+      y.approximation = x.approximation;
+      y.certified = x.certified;
+      y.on_boundary = x.on_boundary;
+      y.on_inequality_boundary = x.on_inequality_boundary;
+      r.roots.push_back(y);
+    }
+    for (const auto& u : s.unresolved) {
+      RI::Plan_unresolved<IT> v;
+      v.kind = u.kind;
+      v.reason = u.reason;
+      v.box = u.box;
+      r.unresolved.push_back(v);
+    }
+  } else if (plan.structure() == RI::Solution_plan::WELL_CONSTRAINED) {
+    r = RI::solve_with_plan<IT>(sys, plan, p);
+  } else {
+    // read, but not a system with isolated roots: say what it is
+    std::ostringstream d;
+    if (plan.structure() == RI::Solution_plan::ONE_DEGREE_OF_FREEDOM || plan.structure() == RI::Solution_plan::UNDER_CONSTRAINED)
+      d << "under_determined: free variables";
+    else
+      d << "over_determined: equations";
+    const auto& part = plan.over_determined_equations().empty() ? plan.under_determined_variables() : plan.over_determined_equations();
+    for (std::size_t k : part) d << " " << (plan.over_determined_equations().empty() ? sys.variable_names[k] : std::to_string(k + 1));
+    if (plan.structure() == RI::Solution_plan::ONE_DEGREE_OF_FREEDOM) d << "; the solution set is a curve, which solve-system does not trace yet";
+    diagnosis = d.str();
+  }
+  if (diagnosis.empty()) diagnosis = r.diagnosis;
+  const double solve_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::size_t certified = 0;
+  for (const auto& x : r.roots) certified += x.certified;
+  const bool complete = diagnosis.empty() && r.complete() && !o.solve.fast;
+  if (!o.dot.empty()) {
+    std::ofstream out(o.dot);
+    if (!out) throw RI::Input_error("cannot write '" + o.dot + "'");
+    RI::write_plan_dot(out, plan, sys.variable_names, sys.labels);
+  }
+  if (o.json) {
+    nlohmann::ordered_json j;
+    j["system"] = path;
+    j["title"] = file.title;
+    j["variables"] = sys.variable_names;
+    nlohmann::ordered_json box = nlohmann::ordered_json::array();
+    for (const auto& b : sys.box) box.push_back({b.first, b.second});
+    j["box"] = box;
+    j["default_box"] = file.default_box;
+    j["plan"] = RI::plan_to_json(plan, sys.variable_names);
+    j["complete"] = complete;
+    j["diagnosis"] = diagnosis.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(diagnosis);
+    nlohmann::ordered_json sols = nlohmann::ordered_json::array();
+    for (const auto& x : r.roots) {
+      nlohmann::ordered_json values, enclosure;
+      for (std::size_t k = 0; k < sys.variable_names.size(); ++k) {
+        values[sys.variable_names[k]] = x.approximation[k];
+        enclosure[sys.variable_names[k]] = interval_json(x.enclosure[k]);
+      }
+      sols.push_back({{"certified", x.certified},
+                      {"values", values},
+                      {"enclosure", enclosure},
+                      {"on_boundary", x.on_boundary},
+                      {"on_inequality_boundary", x.on_inequality_boundary}});
+    }
+    j["solutions"] = sols;
+    nlohmann::ordered_json un = nlohmann::ordered_json::array();
+    for (const auto& u : r.unresolved) {
+      nlohmann::ordered_json b;
+      for (std::size_t k = 0; k < sys.variable_names.size() && k < u.box.size(); ++k) b[sys.variable_names[k]] = interval_json(u.box[k]);
+      un.push_back({{"class", u.kind == RI::Box_class::PENDING ? "pending" : "unknown"}, {"reason", u.reason}, {"block", u.block}, {"box", b}});
+    }
+    j["unresolved"] = un;
+    j["curves"] = nlohmann::ordered_json::array();
+    j["stats"] = {{"blocks", plan.blocks().size()},
+                  {"largest_block", plan.largest_block()},
+                  {"block_solves", r.block_solves},
+                  {"boxes", r.boxes},
+                  {"krawczyk_tests", r.krawczyk_tests},
+                  {"refinements", r.refinements},
+                  {"seconds", {{"read", read_seconds}, {"solve", solve_seconds}}}};
+    std::cout << std::setw(2) << j << "\n";
+    return 0;
+  }
+  std::cout << "system " << path << (file.title.empty() ? std::string() : " (" + file.title + ")") << ": " << sys.number_of_equations()
+            << " equations in " << sys.number_of_variables() << " variables";
+  if (!sys.inequalities.empty()) std::cout << ", " << sys.inequalities.size() << " inequalities";
+  std::cout << "\n  box:";
+  for (std::size_t k = 0; k < sys.variable_names.size(); ++k)
+    std::cout << " " << sys.variable_names[k] << " in [" << sys.box[k].first << ", " << sys.box[k].second << "]";
+  std::cout << (file.default_box ? " (default box: give 'box' lines to change it)" : "") << "\n";
+  RI::write_plan_text(std::cout, plan, sys.variable_names, sys.labels, sys.inequality_labels);
+  if (!diagnosis.empty()) std::cout << "diagnosis: " << diagnosis << "\n";
+  std::cout << r.roots.size() << " real root(s) in the box, " << certified << " certified; " << (complete ? "complete" : "NOT complete") << "\n";
+  std::cout << std::setprecision(15);
+  for (std::size_t i = 0; i < r.roots.size(); ++i) {
+    const auto& x = r.roots[i];
+    std::cout << "  " << i + 1 << (x.certified ? " certified:" : " approximate:");
+    for (std::size_t k = 0; k < sys.variable_names.size(); ++k) std::cout << " " << sys.variable_names[k] << " = " << x.approximation[k];
+    if (x.on_boundary) std::cout << " (on the box boundary)";
+    if (x.on_inequality_boundary) std::cout << " (on an inequality's boundary)";
+    std::cout << "\n";
+  }
+  for (const auto& u : r.unresolved)
+    std::cout << "  unresolved (" << (u.kind == RI::Box_class::PENDING ? "pending" : "unknown") << ", block " << u.block << "): " << u.reason << "\n";
+  std::cout << std::setprecision(6) << "stats: " << r.block_solves << " block solve(s), " << r.boxes << " boxes, " << r.krawczyk_tests
+            << " Krawczyk tests, " << solve_seconds << " s\n";
+  return 0;
+}
+
+inline int solve_system(const std::string& path, const System_options& o)
+{
+  const auto t0 = std::chrono::steady_clock::now();
+  RI::Polynomial_system_file file = RI::read_polynomial_system(path);
+  std::vector<std::vector<std::size_t>> ineq;
+  for (const auto& g : file.system.inequalities) ineq.push_back(g.variables());
+  RI::Solution_plan plan(file.system, ineq);
+  const double read_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (o.solve.precision > 53) {
+#ifdef CGAL_USE_MPFI
+    return run<CGAL::Gmpfi>(file, plan, o, path, read_seconds);
+#else
+    throw RI::Input_error("--precision above 53 needs MPFI (CGAL::Gmpfi), which this build does not have");
+#endif
+  }
+  return run<CGAL::Interval_nt<false>>(file, plan, o, path, read_seconds);
+}
+
+} // namespace system_command
+
+#endif
