@@ -924,14 +924,16 @@ private:
       }
       if (!converged) return false;
       ++result.statistics.certified_boxes;
-      std::vector<Bound> z(n), kl(n), kh(n);
-      for (std::size_t j = 0; j < n; ++j) {
-        z[j] = O::bound_from_double(c[j]);
-        kl[j] = O::bound_from_double(lo[j]);
-        kh[j] = O::bound_from_double(hi[j]);
-      }
-      record(z, z, kl, kh, false);
-      // the box may hold other roots: it is done only if the Jacobian is regular on it
+      std::vector<Bound> z(n);
+      for (std::size_t j = 0; j < n; ++j) z[j] = O::bound_from_double(c[j]);
+      // no uniqueness is proved: the "uniqueness box" is the point itself, so that no other
+      // box is skipped as holding only this root (inside_found)
+      record(z, z, z, z, false);
+      // the box may hold other roots: it is done only if the Jacobian is regular on it (one
+      // root at most) and Newton's root is that one (in the box, not only in the 10% margin:
+      // else the box's own root would be lost)
+      for (std::size_t j = 0; j < n; ++j)
+        if (c[j] < O::to_double(x.lo[j]) || c[j] > O::to_double(x.hi[j])) return false;
       std::vector<IT> K;
       bool inside, empty;
       return krawczyk(x.lo, x.hi, x.b, K, inside, empty) && last_contraction < 1;

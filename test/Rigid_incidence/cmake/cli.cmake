@@ -364,3 +364,28 @@ if(TARGET rigid_incidence)
            COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve-system|${_ri_sys}/parallelogram.txt|--svg|x.svg" -DEXPECT_RC=1
                    "-DEXPECT_STDERR=--svg is an option of solve" -P ${_ri_cli_script})
 endif()
+
+# --- solve-system on systems of PHCpack's demo database (src/Demo of janverschelde/PHCpack):
+# the real roots in the box each file states must all be found and certified. The expected roots
+# (data/systems/phcpack/NAME.roots.json) come from the solution list the PHCpack file ships,
+# cross-checked by `phc -b` (see examples/Rigid_incidence/data/systems/phcpack/README.md);
+# system_json_check matches the solutions to them one to one. About 5 s together in Release, 45 s
+# with the sanitizers.
+if(TARGET rigid_incidence)
+  add_executable(system_json_check ${CMAKE_CURRENT_LIST_DIR}/../system_json_check.cpp)
+  target_link_libraries(system_json_check PRIVATE nlohmann_json::nlohmann_json)
+  set(_ri_phc ${RIGID_INCIDENCE_DATA_DIR}/systems/phcpack)
+  set(_ri_phc_systems caprasse_new chandra4 chemequ cyclic5 eco5 fourbar game4two katsura5 lorentz rbpl rediff3 sendra)
+  # the three slowest (about 1.2 s each in Release, ten times that with the sanitizers) only in
+  # the plain build: the sanitizers see the same code on the others
+  if(NOT RIGID_INCIDENCE_SANITIZE)
+    list(APPEND _ri_phc_systems geneig kotsireas tangents2)
+  endif()
+  foreach(_s ${_ri_phc_systems})
+    add_test(NAME cli_solve_system_phcpack_${_s}
+             COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve-system|${_ri_phc}/${_s}.txt|--json" -DEXPECT_RC=0
+                     "-DSTDOUT_FILE=${CMAKE_CURRENT_BINARY_DIR}/cli_solve_system_phcpack_${_s}.json"
+                     "-DCHECK_PROGRAM=$<TARGET_FILE:system_json_check>" "-DCHECK_ARGS=STDOUT_FILE|${_ri_phc}/${_s}.roots.json"
+                     -P ${_ri_cli_script})
+  endforeach()
+endif()
