@@ -192,10 +192,16 @@ inline void write_svg(const std::string& file, const RI::Scene& scene, const RI:
 }
 
 template <class IT, class NT, class Traits>
-RI::Scene_solve_result run(const RI::Rigid_body_collection<Traits>& input, const RI::Rigid_body_collection<Traits>& c,
+RI::Scene_solve_result run(const RI::Scene& scene, const RI::Rigid_body_collection<Traits>& input, const RI::Rigid_body_collection<Traits>& c,
                            const RI::Incidence_tree& t, const RI::Well_formed_selection& s, const Solve_options& o)
 {
   RI::Scene_solve_parameters p;
+  for (const auto& q : scene.inequalities) {
+    RI::Orientation_inequality g;
+    for (std::size_t k = 0; k < 4; ++k) g.points[k] = q.points[k];
+    g.negative = q.negative;
+    p.inequalities.push_back(g);
+  }
   p.solver.tolerance = o.tolerance;
   p.solver.precision = o.precision;
   p.solver.fast = o.fast;
@@ -213,14 +219,14 @@ int solve(const RI::Scene& scene, const RI::Rigid_body_collection<Traits>& input
   for (std::size_t b : t.covering_set) if (!c.body(b).all_coordinates()) exact = false;
   RI::Scene_solve_result r;
   if (o.precision <= 53) {
-    if (exact) r = run<CGAL::Interval_nt<false>, CGAL::Gmpq>(input, c, t, s, o);
-    else r = run<CGAL::Interval_nt<false>, CGAL::Interval_nt<false>>(input, c, t, s, o);
+    if (exact) r = run<CGAL::Interval_nt<false>, CGAL::Gmpq>(scene, input, c, t, s, o);
+    else r = run<CGAL::Interval_nt<false>, CGAL::Interval_nt<false>>(scene, input, c, t, s, o);
   } else {
 #ifdef CGAL_USE_MPFI
-    if (exact) r = run<CGAL::Gmpfi, CGAL::Gmpq>(input, c, t, s, o);
+    if (exact) r = run<CGAL::Gmpfi, CGAL::Gmpq>(scene, input, c, t, s, o);
     else {
       CGAL::Gmpfi::Precision_type old = CGAL::Gmpfi::set_default_precision(o.precision);
-      r = run<CGAL::Gmpfi, CGAL::Gmpfi>(input, c, t, s, o);
+      r = run<CGAL::Gmpfi, CGAL::Gmpfi>(scene, input, c, t, s, o);
       CGAL::Gmpfi::set_default_precision(old);
     }
 #else
@@ -253,6 +259,7 @@ int solve(const RI::Scene& scene, const RI::Rigid_body_collection<Traits>& input
     for (const auto& x : r.configurations) {
       nlohmann::ordered_json sj;
       sj["certified"] = x.certified;
+      if (!scene.inequalities.empty()) sj["on_inequality_boundary"] = x.on_inequality_boundary;
       nlohmann::ordered_json params = nlohmann::ordered_json::object();
       for (std::size_t i = 0; i < x.variables.size(); ++i) params[x.variables[i]] = {x.parameters[i].first, x.parameters[i].second};
       sj["parameters"] = params;
@@ -299,12 +306,16 @@ int solve(const RI::Scene& scene, const RI::Rigid_body_collection<Traits>& input
   std::cout << "scene " << scene_file << ": reduced system of " << r.variables.size() << " variables, " << r.equations << " equations; "
             << st.chart_combinations << " chart combination(s) solved" << (r.fast ? " in the FAST, NON-CERTIFIED mode" : "") << "\n";
   if (!r.diagnosis.empty()) std::cout << "diagnosis: " << r.diagnosis << "\n";
+  for (const auto& q : scene.inequalities)
+    std::cout << "inequality: det(" << q.points[1] << " - " << q.points[0] << ", " << q.points[2] << " - " << q.points[0] << ", "
+              << q.points[3] << " - " << q.points[0] << ") " << (q.negative ? "<= 0" : ">= 0") << "\n";
   std::cout << r.configurations.size() << " configuration(s)";
   if (r.complete()) std::cout << ", all certified: complete\n";
   else std::cout << "; the result is NOT complete" << (r.unresolved.empty() ? "" : " (unresolved regions below)") << "\n";
   std::size_t k = 0;
   for (const auto& x : r.configurations) {
-    std::cout << "\nconfiguration " << ++k << ": " << (x.certified ? "certified" : "NOT certified") << ", max residual "
+    std::cout << "\nconfiguration " << ++k << ": " << (x.certified ? "certified" : "NOT certified")
+              << (x.on_inequality_boundary ? " (on an inequality's boundary)" : "") << ", max residual "
               << std::setprecision(3) << x.max_residual << std::setprecision(10) << " in the original system\n  parameters:";
     for (std::size_t i = 0; i < x.variables.size(); ++i)
       std::cout << " " << x.variables[i] << " in [" << x.parameters[i].first << ", " << x.parameters[i].second << "]";

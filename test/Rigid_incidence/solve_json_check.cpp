@@ -15,6 +15,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <iostream>
@@ -116,6 +117,18 @@ int main(int argc, char** argv)
         double e = std::abs(dist(pts[a], pts[b]) - want);
         worst = std::max(worst, e);
         CHECK(e <= tol * scale, "solution " << s << ": distance " << a << "-" << b << " off by " << e);
+      }
+    // every orientation inequality: det(B - A, C - A, D - A) >= 0 (<= 0 with "sign": "negative"),
+    // unless the solution is marked as on an inequality's boundary
+    if (scene.contains("inequalities") && !(sol.contains("on_inequality_boundary") && sol["on_inequality_boundary"].get<bool>()))
+      for (const auto& q : scene["inequalities"]) {
+        std::array<P3, 4> X;
+        for (int k = 0; k < 4; ++k) X[k] = pts[q["orientation"][k].get<std::string>()];
+        P3 u, v, w;
+        for (int i = 0; i < 3; ++i) { u[i] = X[1][i] - X[0][i]; v[i] = X[2][i] - X[0][i]; w[i] = X[3][i] - X[0][i]; }
+        double det = u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) + u[2] * (v[0] * w[1] - v[1] * w[0]);
+        if (q.contains("sign") && q["sign"] == "negative") det = -det;
+        CHECK(det > 0, "solution " << s << ": orientation inequality " << q["orientation"].dump() << " violated (" << det << ")");
       }
     CHECK(sol["max_residual"].get<double>() <= tol * scale, "solution " << s << ": reported residual " << sol["max_residual"]);
     // distinct configurations

@@ -186,7 +186,8 @@ static std::vector<Bad_case> malformed_cases()
   add("format_not_string", "{\"format\": 1, \"bodies\": [" + BODY_C1 + "]}", {"format"});
   add("format_duplicate", "{" + FMT + ", " + FMT + ", \"bodies\": [" + BODY_C1 + "]}", {"format", "duplicate"});
   add("unknown_top_field", two_bodies("\"bodys\": []"), {"bodys"});
-  add("unsupported_inequalities", two_bodies("\"inequalities\": []"), {"inequalities"});
+  add("unsupported_free_distance", two_bodies("\"free_distance\": [\"B\", \"C\"]"), {"free_distance"});
+  add("inequality_three_points", two_bodies("\"inequalities\": [{\"orientation\": [\"A\", \"B\", \"C\"]}]"), {"inequalities[0]", "4 point labels"});
   add("unknown_body_field",
       scene(BODY_C1 + R"(, {"name": "c2", "colour": "red", "points": {"A": ["0","0","0"], "D": ["0","0","1"]}})"),
       {"colour", "'c2'||bodies[1]"});

@@ -16,7 +16,9 @@
 #include <CGAL/Rigid_incidence/rigidity_matroid.h>
 #include <CGAL/Rigid_incidence/well_formed_incidences.h>
 
+#include <algorithm>
 #include <array>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -154,6 +156,50 @@ public:
            " dependent constraint(s) left out: the scene is over-constrained and has configurations only if their values agree";
     return d;
   }
+  /*!
+  The numerator of the orientation \f$\det(X_b - X_a, X_c - X_a, X_d - X_a)\f$ of four points
+  (global indices, in this order) in the reduced system's world frame (the tree root's): every
+  point of the covering set is a rational function whose denominator is a product of the tree
+  edges' \f$D_e = |q|^2\f$, positive on every chart's box, so with the four brought to one
+  denominator \f$D\f$ the determinant is this polynomial over \f$D^3 > 0\f$ and has its sign.
+  A rotation keeps the sign, so it is the orientation in any body's frame.
+  \throws Input_error if a point is not placed by the parameters (a point only of a body
+  outside the covering set).
+  */
+  Polynomial orientation_numerator(const std::array<std::size_t, 4>& points) const
+  {
+    typedef typename Parametrization::Rational Rational;
+    const std::size_t n = p_->number_of_variables();
+    std::array<std::array<Rational, 3>, 4> X;
+    for (std::size_t k = 0; k < 4; ++k) {
+      const std::size_t q = points[k];
+      std::vector<std::size_t> ca = carriers(q);
+      if (!ca.empty()) X[k] = p_->position(ca.front(), q, tree_.root);
+      else if (p_->free_point_variable(q) != Parametrization::npos) {
+        for (std::size_t i = 0; i < 3; ++i) X[k][i] = Rational{Polynomial::variable(n, p_->free_point_variable(q) + i), {}};
+      } else
+        throw Input_error("inequality: point '" + c_.label(q) + "' is only on bodies outside the covering set: the parameters do not place it");
+    }
+    std::map<std::size_t, unsigned> den;  // per edge, the highest power among the 12 coordinates
+    for (const auto& x : X)
+      for (const auto& r : x)
+        for (const auto& e : r.den) den[e.first] = (std::max)(den[e.first], e.second);
+    std::array<std::array<Polynomial, 3>, 4> P;
+    for (std::size_t k = 0; k < 4; ++k)
+      for (std::size_t i = 0; i < 3; ++i) {
+        const Rational& r = X[k][i];
+        Polynomial f = r.num;
+        for (const auto& e : den) {
+          auto it = r.den.find(e.first);
+          for (unsigned j = it == r.den.end() ? 0 : it->second; j < e.second; ++j) f = f * p_->denominator(e.first);
+        }
+        P[k][i] = f;
+      }
+    std::array<Polynomial, 3> U, V, W;
+    for (std::size_t i = 0; i < 3; ++i) { U[i] = P[1][i] - P[0][i]; V[i] = P[2][i] - P[0][i]; W[i] = P[3][i] - P[0][i]; }
+    return U[0] * (V[1] * W[2] - V[2] * W[1]) - U[1] * (V[0] * W[2] - V[2] * W[0]) + U[2] * (V[0] * W[1] - V[1] * W[0]);
+  }
+
   /// The system as a general `Polynomial_system` (for the solver).
   Polynomial_system<NT> system() const
   {

@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <array>
 #include <string>
 #include <vector>
 
@@ -24,9 +25,23 @@ namespace CGAL {
 namespace Rigid_incidence {
 
 /// \ingroup PkgRigidIncidenceSolver
+/// An inequality constraint of a scene: the orientation of four labelled points A, B, C, D,
+/// \f$\det(B - A, C - A, D - A) \ge 0\f$ (D on the side of the plane through A, B, C that
+/// \f$(B - A) \times (C - A)\f$ points to), or \f$\le 0\f$ when `negative`.
+struct Orientation_inequality
+{
+  std::array<std::string, 4> points;  ///< the labels A, B, C, D
+  bool negative = false;              ///< the other side
+};
+
+/// \ingroup PkgRigidIncidenceSolver
 /// Parameters of `solve_scene()`.
 struct Scene_solve_parameters
 {
+  /// inequality constraints: configurations that violate one are not returned, and boxes where
+  /// one fails are discarded during the solve; a configuration on an inequality's boundary is
+  /// kept and marked
+  std::vector<Orientation_inequality> inequalities;
   /// parameters of the solver, for each chart combination
   Subdivision_solver_parameters solver;
   /// two roots are one configuration if no point moves more than this, relative to the size
@@ -45,6 +60,7 @@ struct Scene_configuration
 {
   bool certified = false;                             ///< the root is certified (Krawczyk)
   bool on_chart_border = false;                       ///< the root lies on the border of its chart's box
+  bool on_inequality_boundary = false;                ///< some inequality may be 0 there (kept)
   std::vector<int> charts;                            ///< chart combination it was found in (first)
   std::vector<int> placements;                        ///< placement variant per body
   std::vector<std::string> variables;                 ///< names of the parameters
@@ -215,6 +231,16 @@ Scene_solve_result solve_scene(const Rigid_body_collection<Traits>& original, co
   }
   std::vector<int> radix_c;
   for (const auto& e : first.parametrization().edges()) radix_c.push_back(e.number_of_charts);
+  std::vector<std::array<std::size_t, 4>> orientation;
+  for (std::size_t q = 0; q < parameters.inequalities.size(); ++q) {
+    std::array<std::size_t, 4> pts;
+    for (std::size_t k = 0; k < 4; ++k) {
+      pts[k] = c.point_index(parameters.inequalities[q].points[k]);
+      if (pts[k] == Rigid_body_collection<Traits>::npos)
+        throw Input_error("inequality " + std::to_string(q) + ": no point '" + parameters.inequalities[q].points[k] + "' in the scene");
+    }
+    orientation.push_back(pts);
+  }
 
   struct Candidate { Scene_configuration s; double size; };
   std::vector<Candidate> found;
@@ -225,6 +251,12 @@ Scene_solve_result solve_scene(const Rigid_body_collection<Traits>& original, co
       auto t1 = Clock::now();
       Reduced_system<Traits, NT> r(c, tree, selection, charts, Rotation_form::QUATERNION_CHARTS, placements);
       Polynomial_system<NT> sys = r.system();
+      for (std::size_t q = 0; q < orientation.size(); ++q) {
+        auto g = r.orientation_numerator(orientation[q]);
+        sys.inequalities.push_back(parameters.inequalities[q].negative ? NT(-1) * g : g);
+        sys.inequality_labels.push_back("orientation " + parameters.inequalities[q].points[0] + " " + parameters.inequalities[q].points[1] +
+                                        " " + parameters.inequalities[q].points[2] + " " + parameters.inequalities[q].points[3]);
+      }
       st.reduce_seconds += since(t1);
       auto t2 = Clock::now();
       Solver_result<IT> res;
@@ -265,6 +297,7 @@ Scene_solve_result solve_scene(const Rigid_body_collection<Traits>& original, co
         Scene_configuration s;
         s.certified = root.certified;
         s.on_chart_border = root.on_boundary;
+        s.on_inequality_boundary = root.on_inequality_boundary;
         s.charts = charts;
         s.placements = placements;
         s.variables = sys.variable_names;

@@ -45,10 +45,19 @@ struct Scene
     bool given_as_length = false; ///< the file gave "length" rather than "squared"
     CGAL::Gmpq length;         ///< the length, when the file gave "length"
   };
+  /// An inequality constraint: the orientation of four labelled points, det(B - A, C - A,
+  /// D - A) >= 0 (D on the side of the plane through A, B, C that (B - A) x (C - A) points to;
+  /// `negative`: <= 0, the other side).
+  struct Inequality
+  {
+    std::vector<std::string> points;  ///< the labels A, B, C, D
+    bool negative = false;            ///< the file gave "sign": "negative"
+  };
   std::string source;          ///< file name (or "<stream>") used in error messages
   std::string name;            ///< the scene's name (may be empty)
   std::vector<Body> bodies;    ///< the bodies, in the order of the file
   std::vector<Distance> distances; ///< the distances, in the order of the file
+  std::vector<Inequality> inequalities; ///< the inequality constraints, in the order of the file
   std::string frame;           ///< empty: the first body
 };
 

@@ -18,6 +18,7 @@
 #include <istream>
 #include <iterator>
 #include <memory>
+#include <algorithm>
 #include <set>
 #include <sstream>
 #include <string>
@@ -165,13 +166,13 @@ public:
     Scene scene;
     scene.source = source_;
     expect(root, Json_node::OBJECT, "top level");
-    static const std::set<std::string> known = {"format", "name", "bodies", "distances", "frame", "comment"};
-    static const std::set<std::string> later = {"inequalities", "free_distance"};
+    static const std::set<std::string> known = {"format", "name", "bodies", "distances", "inequalities", "frame", "comment"};
+    static const std::set<std::string> later = {"free_distance"};
     for (const auto& m : root.members) {
       if (later.count(m.first))
         fail("field \"" + m.first + "\"", "not supported by this version of the package (it would be ignored)");
       if (!known.count(m.first))
-        fail("field \"" + m.first + "\"", "unknown field (known: format, name, bodies, distances, frame, comment)");
+        fail("field \"" + m.first + "\"", "unknown field (known: format, name, bodies, distances, inequalities, frame, comment)");
     }
     const Json_node* format = member(root, "format", "top level");
     if (!format) fail("", "missing field \"format\" (expected \"rigid-incidence-scene/1\")");
@@ -248,6 +249,36 @@ public:
           dist.squared = dist.length * dist.length;
         }
         scene.distances.push_back(dist);
+      }
+    }
+    if (const Json_node* in = member(root, "inequalities", "top level")) {
+      std::set<std::string> all_labels;
+      for (const auto& b : scene.bodies)
+        for (const auto& p : b.points) all_labels.insert(p.label);
+      expect(*in, Json_node::ARRAY, "field \"inequalities\"");
+      for (std::size_t i = 0; i < in->elements.size(); ++i) {
+        const Json_node& q = in->elements[i];
+        std::string where = "inequalities[" + std::to_string(i) + "]";
+        expect(q, Json_node::OBJECT, where);
+        for (const auto& m : q.members)
+          if (m.first != "orientation" && m.first != "sign") fail(where, "unknown field \"" + m.first + "\" (known: orientation, sign)");
+        const Json_node* o = member(q, "orientation", where);
+        if (!o) fail(where, "missing field \"orientation\" (four point labels A, B, C, D: det(B - A, C - A, D - A) >= 0)");
+        expect(*o, Json_node::ARRAY, where + ".orientation");
+        if (o->elements.size() != 4) fail(where + ".orientation", "expected 4 point labels, found " + std::to_string(o->elements.size()));
+        Scene::Inequality ineq;
+        for (std::size_t k = 0; k < 4; ++k) {
+          std::string l = string_field(o->elements[k], where + ".orientation[" + std::to_string(k) + "]");
+          if (!all_labels.count(l)) fail(where, "point '" + l + "' is in no body");
+          if (std::find(ineq.points.begin(), ineq.points.end(), l) != ineq.points.end()) fail(where, "point '" + l + "' appears twice");
+          ineq.points.push_back(l);
+        }
+        if (const Json_node* sg = member(q, "sign", where)) {
+          std::string v = string_field(*sg, where + ".sign");
+          if (v != "positive" && v != "negative") fail(where + ".sign", "expected \"positive\" or \"negative\", found \"" + v + "\"");
+          ineq.negative = v == "negative";
+        }
+        scene.inequalities.push_back(ineq);
       }
     }
     if (const Json_node* fr = member(root, "frame", "top level")) {
