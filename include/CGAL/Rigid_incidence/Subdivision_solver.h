@@ -294,25 +294,11 @@ private:
       }
       for (const IT& c : e.power) e.power_d.push_back(CGAL::to_double(c));
       for (std::size_t k = 0; k < vars.size(); ++k) {
-        std::vector<unsigned> dd = degs;
-        dd[k] -= 1;
         Shape ds;
-        ds.set(vars, dd);
-        std::vector<double> dp(ds.size, 0.0);
-        std::vector<IT> dpi(ds.size, IT(0));
-        for (std::size_t idx = 0; idx < e.shape.size; ++idx) {
-          std::size_t ik = (idx / e.shape.strides[k]) % (degs[k] + 1);
-          if (ik == 0) continue;
-          // the same multi-index with i_k - 1 in the derivative's shape
-          std::size_t rest = idx, di = 0;
-          for (std::size_t m = 0; m < vars.size(); ++m) {
-            std::size_t im = rest / e.shape.strides[m];
-            rest -= im * e.shape.strides[m];
-            di += (m == k ? im - 1 : im) * ds.strides[m];
-          }
-          dp[di] += double(ik) * e.power_d[idx];
-          dpi[di] = dpi[di] + IT(int(ik)) * e.power[idx];
-        }
+        std::vector<IT> dpi;
+        std::vector<double> dp;
+        differentiate(e.shape, e.power, k, ds, dpi);
+        differentiate(e.shape, e.power_d, k, ds, dp);
         e.dshape.push_back(ds);
         e.dpower.push_back(dpi);
         e.dpower_d.push_back(dp);
@@ -324,16 +310,18 @@ private:
       return e;
     }
 
-    // The partial derivative along local axis k of a power-basis array of shape s: shape ds
-    // (one degree lower along k); an axis of degree 0 gives the zero polynomial (empty da).
-    static void differentiate(const Shape& s, const std::vector<IT>& a, std::size_t k, Shape& ds, std::vector<IT>& da)
+    // The partial derivative along local axis k of a power-basis array of shape s (coefficients
+    // of type T: intervals, or their double estimates): shape ds (one degree lower along k); an
+    // axis of degree 0 gives the zero polynomial (empty da).
+    template <class T>
+    static void differentiate(const Shape& s, const std::vector<T>& a, std::size_t k, Shape& ds, std::vector<T>& da)
     {
       da.clear();
       if (s.degrees[k] == 0) return;
       std::vector<unsigned> dd = s.degrees;
       dd[k] -= 1;
       ds.set(s.variables, dd);
-      da.assign(ds.size, IT(0));
+      da.assign(ds.size, T(0));
       for (std::size_t idx = 0; idx < s.size; ++idx) {
         const std::size_t ik = (idx / s.strides[k]) % (s.degrees[k] + 1);
         if (ik == 0) continue;
@@ -343,7 +331,7 @@ private:
           rest -= im * s.strides[m];
           di += (m == k ? im - 1 : im) * ds.strides[m];
         }
-        da[di] = da[di] + IT(int(ik)) * a[idx];
+        da[di] = da[di] + T(int(ik)) * a[idx];
       }
     }
 
