@@ -42,6 +42,16 @@ nlohmann::ordered_json interval_json(const IT& x)
   return nlohmann::ordered_json::array({O::lower_double(x), O::upper_double(x)});
 }
 
+inline const char* curve_end_name(RI::Curve_end e)
+{
+  switch (e) {
+  case RI::Curve_end::CLOSED: return "closed";
+  case RI::Curve_end::BOUNDARY: return "boundary";
+  case RI::Curve_end::UNRESOLVED: return "unresolved";
+  default: return "inequality";
+  }
+}
+
 template <class IT>
 int run(const RI::Polynomial_system_file& file, const RI::Solution_plan& plan, const System_options& o, const std::string& path,
         double read_seconds)
@@ -55,6 +65,8 @@ int run(const RI::Polynomial_system_file& file, const RI::Solution_plan& plan, c
   const auto t0 = std::chrono::steady_clock::now();
   std::string diagnosis;
   RI::Plan_result<IT> r;
+  RI::Curve_result<IT> curves;
+  bool traced = false;
   if (o.no_plan) {
     // the undecomposed solver, in the same result shape
     auto s = RI::Subdivision_solver<IT>(p).solve(sys);
@@ -80,6 +92,22 @@ int run(const RI::Polynomial_system_file& file, const RI::Solution_plan& plan, c
     }
   } else if (plan.structure() == RI::Solution_plan::WELL_CONSTRAINED) {
     r = RI::solve_with_plan<IT>(sys, plan, p);
+  } else if (plan.structure() == RI::Solution_plan::ONE_DEGREE_OF_FREEDOM && sys.number_of_equations() + 1 == sys.number_of_variables() &&
+             !o.solve.fast) {
+    // one equation fewer than variables: the solution set is a curve, traced whole
+    RI::Curve_tracer_parameters cp;
+    cp.precision = o.solve.precision;
+    cp.tolerance = (std::max)(o.solve.tolerance, 1e-10);
+    if (o.solve.max_boxes > 0) cp.maximal_boxes = o.solve.max_boxes;
+    curves = RI::trace_curves<IT>(sys, cp);
+    traced = true;
+    for (const auto& u : curves.unresolved) {
+      RI::Plan_unresolved<IT> v;
+      v.kind = u.kind;
+      v.reason = u.reason;
+      v.box = u.box;
+      r.unresolved.push_back(v);
+    }
   } else {
     // read, but not a system with isolated roots: say what it is
     std::ostringstream d;
@@ -89,14 +117,15 @@ int run(const RI::Polynomial_system_file& file, const RI::Solution_plan& plan, c
       d << "over_determined: equations";
     const auto& part = plan.over_determined_equations().empty() ? plan.under_determined_variables() : plan.over_determined_equations();
     for (std::size_t k : part) d << " " << (plan.over_determined_equations().empty() ? sys.variable_names[k] : std::to_string(k + 1));
-    if (plan.structure() == RI::Solution_plan::ONE_DEGREE_OF_FREEDOM) d << "; the solution set is a curve, which solve-system does not trace yet";
+    if (plan.structure() == RI::Solution_plan::ONE_DEGREE_OF_FREEDOM)
+      d << "; the solution set is a curve" << (o.solve.fast ? ", which --fast does not trace" : ", traced only when there is one equation fewer than variables");
     diagnosis = d.str();
   }
   if (diagnosis.empty()) diagnosis = r.diagnosis;
   const double solve_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::size_t certified = 0;
   for (const auto& x : r.roots) certified += x.certified;
-  const bool complete = diagnosis.empty() && r.complete() && !o.solve.fast;
+  const bool complete = diagnosis.empty() && r.complete() && !o.solve.fast && (!traced || curves.complete());
   if (!o.dot.empty()) {
     std::ofstream out(o.dot);
     if (!out) throw RI::Input_error("cannot write '" + o.dot + "'");
@@ -132,16 +161,33 @@ int run(const RI::Polynomial_system_file& file, const RI::Solution_plan& plan, c
     for (const auto& u : r.unresolved) {
       nlohmann::ordered_json b;
       for (std::size_t k = 0; k < sys.variable_names.size() && k < u.box.size(); ++k) b[sys.variable_names[k]] = interval_json(u.box[k]);
-      un.push_back({{"class", u.kind == RI::Box_class::PENDING ? "pending" : "unknown"}, {"reason", u.reason}, {"block", u.block}, {"box", b}});
+      un.push_back({{"class", u.kind == RI::Box_class::PENDING ? "pending" : "unknown"}, {"reason", u.reason}, {"block", traced ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(u.block)}, {"box", b}});
     }
     j["unresolved"] = un;
-    j["curves"] = nlohmann::ordered_json::array();
+    nlohmann::ordered_json cj = nlohmann::ordered_json::array();
+    for (const auto& c : curves.curves) {
+      nlohmann::ordered_json ends = nlohmann::ordered_json::array(), regions = nlohmann::ordered_json::array();
+      for (int e = 0; e < 2; ++e) {
+        ends.push_back(curve_end_name(c.ends[e]));
+        regions.push_back(c.end_region[e] < 0 ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(c.end_region[e]));
+      }
+      cj.push_back({{"certified", c.certified},
+                    {"closed", c.closed},
+                    {"ends", ends},
+                    {"end_regions", regions},
+                    {"on_inequality_boundary", c.on_inequality_boundary},
+                    {"max_residual", c.max_residual},
+                    {"points", c.points}});
+    }
+    j["curves"] = cj;
     j["stats"] = {{"blocks", plan.blocks().size()},
                   {"largest_block", plan.largest_block()},
                   {"block_solves", r.block_solves},
                   {"boxes", r.boxes},
                   {"krawczyk_tests", r.krawczyk_tests},
                   {"refinements", r.refinements},
+                  {"curve_boxes", curves.statistics.boxes},
+                  {"face_solves", curves.statistics.face_solves},
                   {"seconds", {{"read", read_seconds}, {"solve", solve_seconds}}}};
     std::cout << std::setw(2) << j << "\n";
     return 0;
@@ -155,7 +201,8 @@ int run(const RI::Polynomial_system_file& file, const RI::Solution_plan& plan, c
   std::cout << (file.default_box ? " (default box: give 'box' lines to change it)" : "") << "\n";
   RI::write_plan_text(std::cout, plan, sys.variable_names, sys.labels, sys.inequality_labels);
   if (!diagnosis.empty()) std::cout << "diagnosis: " << diagnosis << "\n";
-  std::cout << r.roots.size() << " real root(s) in the box, " << certified << " certified; " << (complete ? "complete" : "NOT complete") << "\n";
+  if (traced) std::cout << "the solution set is a curve; " << (complete ? "complete" : "NOT complete") << "\n";
+  else std::cout << r.roots.size() << " real root(s) in the box, " << certified << " certified; " << (complete ? "complete" : "NOT complete") << "\n";
   std::cout << std::setprecision(15);
   for (std::size_t i = 0; i < r.roots.size(); ++i) {
     const auto& x = r.roots[i];
@@ -165,8 +212,24 @@ int run(const RI::Polynomial_system_file& file, const RI::Solution_plan& plan, c
     if (x.on_inequality_boundary) std::cout << " (on an inequality's boundary)";
     std::cout << "\n";
   }
-  for (const auto& u : r.unresolved)
-    std::cout << "  unresolved (" << (u.kind == RI::Box_class::PENDING ? "pending" : "unknown") << ", block " << u.block << "): " << u.reason << "\n";
+  if (traced) {
+    std::size_t certified_branches = 0;
+    for (const auto& c : curves.curves) certified_branches += c.certified;
+    std::cout << curves.curves.size() << " curve branch(es), " << certified_branches << " with certified topology; " << curves.unresolved.size()
+              << " unresolved region(s)\n";
+    for (std::size_t i = 0; i < curves.curves.size(); ++i) {
+      const auto& c = curves.curves[i];
+      std::cout << "  branch " << i + 1 << (c.certified ? " (certified)" : " (not certified)") << ": " << c.points.size() << " points, ";
+      if (c.closed) std::cout << "closed";
+      else std::cout << "from " << curve_end_name(c.ends[0]) << " to " << curve_end_name(c.ends[1]);
+      std::cout << ", max residual " << c.max_residual << (c.on_inequality_boundary ? ", clipped by an inequality" : "") << "\n";
+    }
+  }
+  for (const auto& u : r.unresolved) {
+    std::cout << "  unresolved (" << (u.kind == RI::Box_class::PENDING ? "pending" : "unknown");
+    if (!traced) std::cout << ", block " << u.block;
+    std::cout << "): " << u.reason << "\n";
+  }
   std::cout << std::setprecision(6) << "stats: " << r.block_solves << " block solve(s), " << r.boxes << " boxes, " << r.krawczyk_tests
             << " Krawczyk tests, " << solve_seconds << " s\n";
   return 0;

@@ -11,6 +11,7 @@
 //    point where they touch), with a dense independent sampling of the true curve (crank
 //    angle on a grid, the coupler point from the circle-circle intersection in closed form)
 //    that must lie near the traced polylines, and every polyline point on the curve;
+//  - the paper's four-bar (a parallelogram linkage) with and without its two inequalities;
 //  - an inequality clipping a circle; CGAL::Gmpfi intervals; interval coefficients;
 //  - malformed input throws Input_error.
 
@@ -276,6 +277,51 @@ static void four_bar(int a, int b, int c, int d, int circuits, bool change_point
   check_points(r, truth, change_point ? 0.1 : 0.05, what);
 }
 
+// The paper's four-bar linkage (van Sosin and Elber, Section 4, Fig. 5): P0 = (-1, 0), P1 =
+// (1, 0), |A P0| = 0.9, |A B| = 2, |B P1| = 0.9: a parallelogram linkage, whose two circuits
+// cross at the collinear configurations A = (-1.9, 0) and A = (-0.1, 0). With the paper's
+// inequalities Ay >= 0 and (B - P1) x (A - P1) >= 0: the parallelogram motion with A above the
+// axis, one branch between the two singular points.
+static void paper_four_bar(bool with_inequalities)
+{
+  const std::size_t n = 4;
+  P ax = P::variable(n, 0), ay = P::variable(n, 1), bx = P::variable(n, 2), by = P::variable(n, 3), one = P::constant(n, 1);
+  RI::Polynomial_system<Q> s;
+  s.variable_names = {"Ax", "Ay", "Bx", "By"};
+  s.box.assign(4, {-3, 3});
+  s.equations = {(ax + one) * (ax + one) + ay * ay - Q(81, 100) * one, (ax - bx) * (ax - bx) + (ay - by) * (ay - by) - Q(4) * one,
+                 (bx - one) * (bx - one) + by * by - Q(81, 100) * one};
+  auto g1 = [](const Pt& p) { return p[1]; };
+  auto g2 = [](const Pt& p) { return (p[2] - 1) * p[1] - p[3] * (p[0] - 1); };
+  if (with_inequalities) s.inequalities = {ay, (bx - one) * ay - by * (ax - one)};
+  auto r = RI::trace_curves(s);
+  const std::string what = with_inequalities ? "paper four-bar with inequalities" : "paper four-bar";
+  CHECK(r.unresolved.size() == 2, what << ": two singular regions (" << r.unresolved.size() << ")");
+  for (const auto& u : r.unresolved)
+    CHECK(in_region<I>({-1.9, 0, 0.1, 0}, u) || in_region<I>({-0.1, 0, 1.9, 0}, u), what << ": a region holds a collinear configuration");
+  CHECK(r.curves.size() == (with_inequalities ? 1u : 4u), what << ": " << r.curves.size() << " branches");
+  for (const auto& c : r.curves) {
+    CHECK(c.certified && c.ends[0] == RI::Curve_end::UNRESOLVED && c.ends[1] == RI::Curve_end::UNRESOLVED && c.end_region[0] != c.end_region[1],
+          what << ": a branch from one collinear configuration to the other");
+    if (with_inequalities)
+      for (const auto& p : c.points) CHECK(g1(p) > -1e-5 && g2(p) > -1e-5, what << ": a polyline point violates an inequality");
+  }
+  // the true curve: A at angle t around P0, B = the intersections of the circles (A, 2), (P1, 0.9)
+  std::vector<Pt> truth;
+  for (int k = 0; k < 2000; ++k) {
+    const double t = 2 * M_PI * k / 2000, x = -1 + 0.9 * std::cos(t), y = 0.9 * std::sin(t);
+    const double ex = 1 - x, ey = -y, e = std::hypot(ex, ey);
+    const double along = (4 - 0.81 + e * e) / (2 * e), h2 = 4 - along * along;
+    if (h2 < 0) continue;
+    for (int sgn : {-1, 1}) {
+      const Pt p{x, y, x + along * ex / e - sgn * std::sqrt(h2) * ey / e, y + along * ey / e + sgn * std::sqrt(h2) * ex / e};
+      if (!with_inequalities || (g1(p) > 1e-3 && g2(p) > 1e-3)) truth.push_back(p);
+    }
+  }
+  CHECK(truth.size() > 100, what << ": the oracle sampled the curve");
+  check_points(r, truth, 0.05, what);
+}
+
 static void inequality_and_types()
 {
   {
@@ -334,6 +380,8 @@ int main()
   four_bar(1, 3, 3, 4, 2, false);  // Grashof crank-rocker: 1 + 4 < 3 + 3, two circuits
   four_bar(4, 6, 5, 8, 1, false);  // non-Grashof: 4 + 8 > 6 + 5, one circuit
   four_bar(1, 3, 2, 4, 0, true);   // change point: 1 + 4 = 3 + 2
+  paper_four_bar(false);
+  paper_four_bar(true);
   inequality_and_types();
   std::cout << checks << " checks, " << failures << " failures\n";
   return failures ? 1 : 0;

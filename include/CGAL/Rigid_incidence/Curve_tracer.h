@@ -236,6 +236,7 @@ public:
     std::vector<double> point;  // approximation
     bool entry = false;         // entry in increasing x_j
     bool sign_known = false;    // `entry` is proved (else it follows from the order)
+    bool dropped = false;       // its arc is left out: an inequality is < 0 along it
     std::size_t node = 0;       // index in the leaf's crossing list -> global id
   };
   struct Arc
@@ -480,11 +481,11 @@ private:
       const IT r = f.range(B.lo, B.hi);
       if (certainly_positive(r) || certainly_negative(r)) { B.state = EXCLUDED; ++result.statistics.excluded; return; }
     }
-    bool straddles = false;
-    for (const auto& g : ineq) {
-      const IT r = g.range(B.lo, B.hi);
+    std::vector<std::size_t> straddling;
+    for (std::size_t q = 0; q < ineq.size(); ++q) {
+      const IT r = ineq[q].range(B.lo, B.hi);
       if (certainly_negative(r)) { B.state = EXCLUDED_BY_INEQUALITY; ++result.statistics.excluded_by_inequality; return; }
-      if (!certainly_positive(r) && O::lower(r) < 0) straddles = true;
+      if (!certainly_positive(r) && O::lower(r) < 0) straddling.push_back(q);
     }
     const bool small = width(B) <= min_width;
     // (2) regularity
@@ -498,9 +499,6 @@ private:
       if (contraction(A, Y, M) < 1) { regular = true; B.parameter = order[c]; }
     }
     if (!regular) { split_or_give_up(b, "singular: no regular parametrization at the minimal width"); return; }
-    // an inequality may change sign in the box: resolve it down to the minimal width
-    if (straddles && !small) { split(b); return; }
-    B.inequality_boundary = straddles;
     // (3) crossings on the faces
     std::vector<Crossing> found;
     std::string why;
@@ -518,15 +516,36 @@ private:
       }
     }
     if (found.size() % 2) { split_or_give_up(b, "crossings not certified"); return; }
+    // (5) an inequality whose range in the box contains 0: where the curve meets g = 0 (the
+    // roots of the equations and g together) the box is split down to the minimal width;
+    // where it does not, g keeps one sign along each arc, read at the arc's first crossing
+    std::vector<char> keep(found.size() / 2, 1);
+    if (!straddling.empty() && small) B.inequality_boundary = true;
+    else
+      for (std::size_t q : straddling) {
+        const int meets = meets_inequality(B, q);
+        if (meets != 0) {
+          if (meets > 0) split(b);
+          else split_or_give_up(b, "inequality not decided");
+          return;
+        }
+        for (std::size_t k = 0; k + 1 < found.size(); k += 2) {
+          const IT g = sys.inequalities[q].template evaluate<IT>(found[k].enclosure);
+          if (certainly_negative(g)) keep[k / 2] = 0;
+          else if (!certainly_positive(g)) { split_or_give_up(b, "inequality not decided"); return; }
+        }
+      }
     B.state = REGULAR;
     ++result.statistics.regular;
-    for (auto& c : found) {
+    for (std::size_t k = 0; k < found.size(); ++k) {
+      found[k].dropped = !keep[k / 2];
       B.crossings.push_back(crossings.size());
       crossing_box.push_back(b);
-      crossings.push_back(c);
+      crossings.push_back(found[k]);
     }
     result.statistics.crossings += found.size();
     for (std::size_t k = 0; k + 1 < found.size(); k += 2) {
+      if (!keep[k / 2]) continue;
       Arc a;
       a.from = B.crossings[k];
       a.to = B.crossings[k + 1];
@@ -534,6 +553,27 @@ private:
       arcs.push_back(a);
       ++result.statistics.arcs;
     }
+  }
+
+  // 0 if the curve certainly does not meet g_q = 0 in the box, 1 if it does, -1 if the
+  // solver cannot tell
+  int meets_inequality(const Box& B, std::size_t q)
+  {
+    Polynomial_system<NT> s;
+    s.variable_names = sys.variable_names;
+    for (std::size_t v = 0; v < n; ++v) s.box.emplace_back(O::to_double(B.lo[v]), O::to_double(B.hi[v]));
+    s.equations = sys.equations;
+    s.equations.push_back(sys.inequalities[q]);
+    Subdivision_solver_parameters p = face_parameters();
+    Solver_result<IT> r;
+    try {
+      r = Subdivision_solver<IT>(p).solve(s);
+    } catch (const Input_error&) {
+      return -1;
+    }
+    ++result.statistics.face_solves;
+    if (!r.roots.empty()) return 1;
+    return r.unresolved.empty() ? 0 : -1;
   }
 
   // the equations on the hyperplane x_i = c, in the other variables over the box's other
@@ -774,6 +814,7 @@ private:
     std::vector<char> suspect(N, 0);
     for (std::size_t x = 0; x < N; ++x) {
       const Crossing& c = crossings[x];
+      if (c.dropped) continue;
       const long across = locate_across(c);
       if (across == -2) { end_kind[x] = Curve_end::BOUNDARY; continue; }
       if (across < 0) { suspect[x] = 1; ++result.statistics.unmatched; continue; }
@@ -786,6 +827,7 @@ private:
           if (inside(c.enclosure, d.uniqueness) || inside(d.enclosure, c.uniqueness)) { partner = long(y); break; }
         }
         if (partner < 0) { suspect[x] = 1; ++result.statistics.unmatched; }
+        else if (crossings[std::size_t(partner)].dropped) end_kind[x] = Curve_end::INEQUALITY;  // g changes sign on it
         else unite(x, std::size_t(partner));
       } else if (region_of_box[std::size_t(across)] >= 0) {
         end_kind[x] = Curve_end::UNRESOLVED;
@@ -864,6 +906,27 @@ private:
           if (!used[a]) walk(r, a);
     for (std::size_t a = 0; a < arcs.size(); ++a)
       if (!used[a]) walk(find(arcs[a].from), a);
+    // a piece that leaves a singular region only to come back to it, never farther than the
+    // region's own width, is part of that region: the region grows to hold its boxes
+    std::vector<Solution_curve<IT>> kept;
+    for (auto& c : result.curves) {
+      bool fold = !c.closed && c.ends[0] == Curve_end::UNRESOLVED && c.ends[1] == Curve_end::UNRESOLVED && c.end_region[0] >= 0 &&
+                  c.end_region[0] == c.end_region[1];
+      if (fold) {
+        Solver_unresolved<IT>& u = result.unresolved[std::size_t(c.end_region[0])];
+        for (const auto& p : c.points)
+          for (std::size_t v = 0; v < n; ++v) {
+            const double lo = O::lower_double(u.box[v]), hi = O::upper_double(u.box[v]), w = hi - lo;
+            if (p[v] < lo - w || p[v] > hi + w) fold = false;
+          }
+        if (fold)
+          for (const auto& bx : c.boxes)
+            for (std::size_t v = 0; v < n; ++v)
+              u.box[v] = O::make((std::min)(O::lower(u.box[v]), O::lower(bx[v])), (std::max)(O::upper(u.box[v]), O::upper(bx[v])));
+      }
+      if (!fold) kept.push_back(std::move(c));
+    }
+    result.curves.swap(kept);
     // a stable order: by the first point
     std::sort(result.curves.begin(), result.curves.end(), [](const Solution_curve<IT>& x, const Solution_curve<IT>& y) {
       return x.points.front() < y.points.front();

@@ -362,6 +362,16 @@ if(TARGET rigid_incidence)
   add_test(NAME cli_solve_system_missing_file
            COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve-system|${CMAKE_CURRENT_BINARY_DIR}/no_such_system.txt" -DEXPECT_RC=2
                    "-DEXPECT_STDERR=rigid_incidence: error: .*no_such_system.txt" -P ${_ri_cli_script})
+  # one equation fewer than variables: the paper's four-bar linkage (Fig. 5) as curves; a
+  # parallelogram linkage, so its two circuits cross at two singular points
+  add_test(NAME cli_solve_system_four_bar
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve-system|${_ri_sys}/four_bar_linkage.txt" -DEXPECT_RC=0
+                   "-DEXPECT_STDOUT=one_degree_of_freedom&&the solution set is a curve; NOT complete&&4 curve branch\\(es\\), 4 with certified topology; 2 unresolved region\\(s\\)&&branch 1 \\(certified\\): [0-9]+ points, from unresolved to unresolved&&unresolved \\(unknown\\): singular"
+                   -P ${_ri_cli_script})
+  add_test(NAME cli_solve_system_four_bar_inequalities
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve-system|${_ri_sys}/four_bar_linkage_ineq.txt|--json" -DEXPECT_RC=0
+                   "-DEXPECT_STDOUT=\"structure\": \"one_degree_of_freedom\"&&\"complete\": false&&\"curves\": .\n +.\n +\"certified\": true,\n +\"closed\": false,\n +\"ends\": .\n +\"unresolved\",\n +\"unresolved\"&&\"points\": .&&\"face_solves\": [1-9]"
+                   -P ${_ri_cli_script})
   add_test(NAME cli_solve_system_rejects_svg
            COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve-system|${_ri_sys}/parallelogram.txt|--svg|x.svg" -DEXPECT_RC=1
                    "-DEXPECT_STDERR=--svg is an option of solve" -P ${_ri_cli_script})
