@@ -52,6 +52,19 @@ inline const char* curve_end_name(RI::Curve_end e)
   }
 }
 
+// the undecomposed solver's or the tracer's regions, in the plan result's shape
+template <class IT>
+void add_unresolved(RI::Plan_result<IT>& r, const std::vector<RI::Solver_unresolved<IT>>& regions)
+{
+  for (const auto& u : regions) {
+    RI::Plan_unresolved<IT> v;
+    v.kind = u.kind;
+    v.reason = u.reason;
+    v.box = u.box;
+    r.unresolved.push_back(v);
+  }
+}
+
 template <class IT>
 int run(const RI::Polynomial_system_file& file, const RI::Solution_plan& plan, const System_options& o, const std::string& path,
         double read_seconds)
@@ -83,13 +96,7 @@ int run(const RI::Polynomial_system_file& file, const RI::Solution_plan& plan, c
       y.on_inequality_boundary = x.on_inequality_boundary;
       r.roots.push_back(y);
     }
-    for (const auto& u : s.unresolved) {
-      RI::Plan_unresolved<IT> v;
-      v.kind = u.kind;
-      v.reason = u.reason;
-      v.box = u.box;
-      r.unresolved.push_back(v);
-    }
+    add_unresolved(r, s.unresolved);
   } else if (plan.structure() == RI::Solution_plan::WELL_CONSTRAINED) {
     r = RI::solve_with_plan<IT>(sys, plan, p);
   } else if (plan.structure() == RI::Solution_plan::ONE_DEGREE_OF_FREEDOM && sys.number_of_equations() + 1 == sys.number_of_variables() &&
@@ -101,13 +108,7 @@ int run(const RI::Polynomial_system_file& file, const RI::Solution_plan& plan, c
     if (o.solve.max_boxes > 0) cp.maximal_boxes = o.solve.max_boxes;
     curves = RI::trace_curves<IT>(sys, cp);
     traced = true;
-    for (const auto& u : curves.unresolved) {
-      RI::Plan_unresolved<IT> v;
-      v.kind = u.kind;
-      v.reason = u.reason;
-      v.box = u.box;
-      r.unresolved.push_back(v);
-    }
+    add_unresolved(r, curves.unresolved);
   } else {
     // read, but not a system with isolated roots: say what it is
     std::ostringstream d;
