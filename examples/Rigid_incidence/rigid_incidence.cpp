@@ -34,7 +34,8 @@ static const char* usage_text =
   "  rigid_incidence reduce SCENE.json [--json] [--chart I,J,...] [--form charts|stereographic]\n"
   "                         [--coefficients auto|exact|interval] [--kernel exact|epick|epeck]\n"
   "  rigid_incidence solve SCENE.json [--json] [--tolerance EPS] [--precision BITS] [--fast]\n"
-  "                        [--svg FILE] [--near CONFIG.json] [--max-boxes N] [--kernel K]\n"
+  "                        [--svg FILE] [--plot A.x,B.z] [--near CONFIG.json] [--max-boxes N]\n"
+  "                        [--kernel K]\n"
   "  rigid_incidence solve-system FILE [--json] [--tolerance EPS] [--precision BITS] [--fast]\n"
   "                        [--max-boxes N] [--dot FILE] [--no-plan]\n"
   "  rigid_incidence --help\n"
@@ -83,7 +84,14 @@ static const char* usage_text =
   "            complete, certified, diagnosis, solutions [{certified, parameters, charts,\n"
   "            bodies {name: {rotation, translation}}, points {label: [x, y, z]},\n"
   "            max_residual}], unresolved [{class, reason, box, boxes, charts, points}],\n"
-  "            stats}. A scene that is read exits 0 whatever was found.\n"
+  "            curves, stats}. A scene with one degree of freedom (one equation fewer than\n"
+  "            parameters), or one the dof count calls finite whose solver finds a curve of\n"
+  "            solutions (it flexes), gives curves of configurations: traced per chart\n"
+  "            combination with certified topology and joined across chart borders; curves\n"
+  "            [{certified, closed, ends, note, max_residual, points {label: [[x, y, z],\n"
+  "            ...]}, pieces [{charts, parameters}]}]. With curves, --svg draws each branch as\n"
+  "            a strip of frames and a plot of two point coordinates (--plot A.x,B.z; default:\n"
+  "            the point that moves most).\n"
   "\n"
   "  solve-system  Every real root of a polynomial system in a box. FILE is PHCpack's input\n"
   "            format (the number of equations [and of variables], then the polynomials, each\n"
@@ -488,9 +496,9 @@ int main(int argc, char** argv)
     } else if (a == "--fast") {
       if (o.command != "solve" && o.command != "solve-system") { std::cerr << "rigid_incidence: --fast is an option of solve\n"; return 1; }
       o.solve.fast = true;
-    } else if (a == "--tolerance" || a == "--precision" || a == "--svg" || a == "--near" || a == "--max-boxes") {
+    } else if (a == "--tolerance" || a == "--precision" || a == "--svg" || a == "--near" || a == "--max-boxes" || a == "--plot") {
       if (i + 1 >= args.size()) { std::cerr << "rigid_incidence: " << a << " needs a value\n"; return 1; }
-      const bool system_option = a != "--svg" && a != "--near";
+      const bool system_option = a != "--svg" && a != "--near" && a != "--plot";
       if (o.command != "solve" && !(system_option && o.command == "solve-system")) {
         std::cerr << "rigid_incidence: " << a << " is an option of solve" << (system_option ? " and solve-system" : "") << "\n";
         return 1;
@@ -507,6 +515,7 @@ int main(int argc, char** argv)
           if (b != std::floor(b) || b > 1e12) throw RI::Input_error(a + ": '" + v + "' is not a whole number of boxes");
           o.solve.max_boxes = std::size_t(b);
         } else if (a == "--svg") o.solve.svg = v;
+        else if (a == "--plot") o.solve.plot = v;
         else o.solve.near = v;
       } catch (const RI::Input_error& e) {
         std::cerr << "rigid_incidence: " << e.what() << "\n";

@@ -31,6 +31,7 @@ struct Solve_options
   bool fast = false;
   std::size_t max_boxes = 0;   // 0: the solver's default
   std::string svg, near;
+  std::string plot;  // --plot A.x,B.z: the coordinates plotted against each other for curves
 };
 
 // Parses a positive number option; an Input_error names the option.
@@ -117,19 +118,12 @@ inline double near_distance(const RI::Configuration& c, const std::map<std::stri
   return common ? std::sqrt(s / double(common)) : std::numeric_limits<double>::infinity();
 }
 
-// The gallery: each configuration as a projected line drawing (bodies as edges between their
-// points, shared points marked), side by side, one view direction for all.
-inline void write_svg(const std::string& file, const RI::Scene& scene, const RI::Scene_solve_result& r, const std::string& title)
+// One configuration as a projected line drawing in the cell at (ox, oy): bodies as edges
+// between their points, distances dashed, shared points marked; one view direction for all.
+inline void draw_frame(std::ostream& out, const RI::Scene& scene, const RI::Configuration& conf, double ox, double oy, double cell,
+                       const std::string& caption)
 {
-  std::ofstream out(file);
-  if (!out) throw RI::Input_error("--svg: cannot write '" + file + "'");
-  out << std::fixed << std::setprecision(2);  // coordinates in pixels
-  auto residual_text = [](double x) {
-    std::ostringstream os;
-    os << std::setprecision(2) << x;
-    return os.str();
-  };
-  const double az = 0.6, el = 0.45;  // view: azimuth and elevation in radians
+  const double az = 0.6, el = 0.45, pad = cell / 13;  // view: azimuth and elevation in radians
   auto project = [&](const std::array<double, 3>& p) {
     double x = std::cos(az) * p[0] - std::sin(az) * p[1];
     double y0 = std::sin(az) * p[0] + std::cos(az) * p[1];
@@ -138,55 +132,173 @@ inline void write_svg(const std::string& file, const RI::Scene& scene, const RI:
   };
   std::map<std::string, int> uses;
   for (const auto& b : scene.bodies) for (const auto& p : b.points) ++uses[p.label];
+  const char* colours[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#e377c2", "#17becf"};
+  std::map<std::string, std::array<double, 2>> q;
+  double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
+  for (std::size_t i = 0; i < conf.labels.size(); ++i) {
+    if (!conf.placed[i]) continue;
+    auto p = project(conf.points[i]);
+    q[conf.labels[i]] = p;
+    for (int a = 0; a < 2; ++a) { lo[a] = std::min(lo[a], p[a]); hi[a] = std::max(hi[a], p[a]); }
+  }
+  const double s = (cell - 2 * pad) / std::max(1e-300, std::max(hi[0] - lo[0], hi[1] - lo[1]));
+  auto X = [&](const std::array<double, 2>& p) { return ox + pad + (p[0] - lo[0]) * s; };
+  auto Y = [&](const std::array<double, 2>& p) { return oy + pad + (p[1] - lo[1]) * s; };
+  out << "<g>\n<rect x=\"" << ox + 2 << "\" y=\"" << oy + 2 << "\" width=\"" << cell - 4 << "\" height=\"" << cell - 4
+      << "\" fill=\"none\" stroke=\"#ccc\"/>\n<text x=\"" << ox + 8 << "\" y=\"" << oy + 14 << "\">" << caption << "</text>\n";
+  std::size_t bi = 0;
+  for (const auto& b : scene.bodies) {
+    const char* col = colours[bi++ % 8];
+    for (std::size_t i = 0; i < b.points.size(); ++i)
+      for (std::size_t j = i + 1; j < b.points.size(); ++j) {
+        auto a = q.find(b.points[i].label), c = q.find(b.points[j].label);
+        if (a == q.end() || c == q.end()) continue;
+        out << "<line x1=\"" << X(a->second) << "\" y1=\"" << Y(a->second) << "\" x2=\"" << X(c->second) << "\" y2=\"" << Y(c->second)
+            << "\" stroke=\"" << col << "\" stroke-width=\"1.3\"/>\n";
+      }
+  }
+  for (const auto& d : scene.distances) {
+    auto a = q.find(d.a), c = q.find(d.b);
+    if (a == q.end() || c == q.end()) continue;
+    out << "<line x1=\"" << X(a->second) << "\" y1=\"" << Y(a->second) << "\" x2=\"" << X(c->second) << "\" y2=\"" << Y(c->second)
+        << "\" stroke=\"#555\" stroke-dasharray=\"4 3\"/>\n";
+  }
+  for (const auto& p : q) {
+    bool shared = uses[p.first] > 1;
+    out << "<circle cx=\"" << X(p.second) << "\" cy=\"" << Y(p.second) << "\" r=\"" << (shared ? 3.5 : 2) << "\" fill=\""
+        << (shared ? "black" : "white") << "\" stroke=\"black\"/>\n";
+    if (shared && cell >= 200) out << "<text x=\"" << X(p.second) + 4 << "\" y=\"" << Y(p.second) - 4 << "\">" << p.first << "</text>\n";
+  }
+  out << "</g>\n";
+}
+
+inline const char* curve_end_name(RI::Curve_end e)
+{
+  switch (e) {
+  case RI::Curve_end::CLOSED: return "closed";
+  case RI::Curve_end::BOUNDARY: return "boundary";
+  case RI::Curve_end::UNRESOLVED: return "unresolved";
+  default: return "inequality";
+  }
+}
+
+inline std::string short_number(double x)
+{
+  std::ostringstream os;
+  os << std::setprecision(2) << x;
+  return os.str();
+}
+
+// The gallery: each configuration as a projected line drawing, side by side.
+inline void write_svg(const std::string& file, const RI::Scene& scene, const RI::Scene_solve_result& r, const std::string& title)
+{
+  std::ofstream out(file);
+  if (!out) throw RI::Input_error("--svg: cannot write '" + file + "'");
+  out << std::fixed << std::setprecision(2);  // coordinates in pixels
   const std::size_t n = r.configurations.size(), cols = n == 0 ? 1 : std::min<std::size_t>(n, 4), rows = n == 0 ? 1 : (n + cols - 1) / cols;
-  const double cell = 260, pad = 20;
+  const double cell = 260;
   out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << cols * cell << "\" height=\"" << rows * cell + 30
       << "\" font-family=\"sans-serif\" font-size=\"10\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
       << "<text x=\"8\" y=\"18\" font-size=\"13\">" << title << "</text>\n";
   if (n == 0) out << "<text x=\"8\" y=\"60\">no configuration" << (r.complete() ? "" : " certified (see the unresolved regions)") << "</text>\n";
+  for (std::size_t k = 0; k < n; ++k)
+    draw_frame(out, scene, r.configurations[k].configuration, (k % cols) * cell, 30 + (k / cols) * cell, cell,
+               "#" + std::to_string(k + 1) + (r.configurations[k].certified ? " certified" : " not certified") + ", residual " +
+                   short_number(r.configurations[k].max_residual));
+  out << "</svg>\n";
+}
+
+// The point coordinate named "LABEL.x" (or .y, .z): its index in the configuration, and axis.
+inline std::pair<std::size_t, int> coordinate_named(const RI::Configuration& conf, const std::string& name)
+{
+  const auto dot = name.rfind('.');
+  if (dot == std::string::npos || dot + 2 != name.size() || name[dot + 1] < 'x' || name[dot + 1] > 'z')
+    throw RI::Input_error("--plot: '" + name + "' is not LABEL.x, LABEL.y or LABEL.z");
+  for (std::size_t i = 0; i < conf.labels.size(); ++i)
+    if (conf.labels[i] == name.substr(0, dot) && conf.placed[i]) return {i, name[dot + 1] - 'x'};
+  throw RI::Input_error("--plot: no placed point '" + name.substr(0, dot) + "' in the scene");
+}
+
+// The motion of a scene with one degree of freedom: per branch a strip of frames evenly
+// spaced along it, then a plot of one point coordinate against another for every branch
+// (`plot`: "A.x,B.z"; empty: the point that moves most, its two most varying coordinates).
+inline void write_curves_svg(const std::string& file, const RI::Scene& scene, const RI::Scene_solve_result& r, const std::string& title,
+                             const std::string& plot)
+{
+  std::ofstream out(file);
+  if (!out) throw RI::Input_error("--svg: cannot write '" + file + "'");
+  out << std::fixed << std::setprecision(2);
+  const std::size_t frames = 6;
+  const double cell = 150, plot_size = 420;
+  const std::size_t n = r.curves.size();
+  // the plotted coordinates
+  std::pair<std::size_t, int> ax{0, 0}, ay{0, 1};
+  std::string xname, yname;
+  const RI::Configuration& c0 = r.curves.front().configurations.front();
+  if (!plot.empty()) {
+    const auto comma = plot.find(',');
+    if (comma == std::string::npos) throw RI::Input_error("--plot: expected two coordinates, e.g. E1.x,E1.z");
+    xname = plot.substr(0, comma);
+    yname = plot.substr(comma + 1);
+    ax = coordinate_named(c0, xname);
+    ay = coordinate_named(c0, yname);
+  } else {
+    // the point and axes that vary most over all branches
+    std::vector<std::array<double, 3>> lo(c0.points.size(), {1e300, 1e300, 1e300}), hi(c0.points.size(), {-1e300, -1e300, -1e300});
+    for (const auto& c : r.curves)
+      for (const auto& f : c.configurations)
+        for (std::size_t i = 0; i < f.points.size(); ++i)
+          for (int a = 0; a < 3; ++a) { lo[i][a] = std::min(lo[i][a], f.points[i][a]); hi[i][a] = std::max(hi[i][a], f.points[i][a]); }
+    double best = -1;
+    for (std::size_t i = 0; i < c0.points.size(); ++i) {
+      if (!c0.placed[i]) continue;
+      std::array<int, 3> order{{0, 1, 2}};
+      std::sort(order.begin(), order.end(), [&](int a, int b) { return hi[i][a] - lo[i][a] > hi[i][b] - lo[i][b]; });
+      const double spread = hi[i][order[0]] - lo[i][order[0]] + hi[i][order[1]] - lo[i][order[1]];
+      if (spread > best) {
+        best = spread;
+        ax = {i, std::min(order[0], order[1])};
+        ay = {i, std::max(order[0], order[1])};
+      }
+    }
+    xname = c0.labels[ax.first] + "." + char('x' + ax.second);
+    yname = c0.labels[ay.first] + "." + char('x' + ay.second);
+  }
+  const double width = std::max(frames * cell, plot_size + 40), height = 30 + n * (cell + 20) + plot_size + 60;
+  out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height
+      << "\" font-family=\"sans-serif\" font-size=\"10\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
+      << "<text x=\"8\" y=\"18\" font-size=\"13\">" << title << "</text>\n";
   const char* colours[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#e377c2", "#17becf"};
   for (std::size_t k = 0; k < n; ++k) {
-    const auto& conf = r.configurations[k].configuration;
-    std::map<std::string, std::array<double, 2>> q;
-    double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
-    for (std::size_t i = 0; i < conf.labels.size(); ++i) {
-      if (!conf.placed[i]) continue;
-      auto p = project(conf.points[i]);
-      q[conf.labels[i]] = p;
-      for (int a = 0; a < 2; ++a) { lo[a] = std::min(lo[a], p[a]); hi[a] = std::max(hi[a], p[a]); }
+    const auto& c = r.curves[k];
+    const double oy = 30 + k * (cell + 20);
+    out << "<text x=\"8\" y=\"" << oy + 12 << "\" fill=\"" << colours[k % 8] << "\">branch " << k + 1 << (c.certified ? ", certified" : ", not certified")
+        << (c.closed ? ", closed" : "") << ", " << c.configurations.size() << " frames, residual " << short_number(c.max_residual) << "</text>\n";
+    for (std::size_t f = 0; f < frames; ++f) {
+      const std::size_t at = c.configurations.size() == 1 ? 0 : f * (c.configurations.size() - 1) / (frames - 1);
+      draw_frame(out, scene, c.configurations[at], f * cell, oy + 16, cell, std::to_string(at + 1));
     }
-    const double ox = (k % cols) * cell, oy = 30 + (k / cols) * cell;
-    const double s = (cell - 2 * pad) / std::max(1e-300, std::max(hi[0] - lo[0], hi[1] - lo[1]));
-    auto X = [&](const std::array<double, 2>& p) { return ox + pad + (p[0] - lo[0]) * s; };
-    auto Y = [&](const std::array<double, 2>& p) { return oy + pad + (p[1] - lo[1]) * s; };
-    out << "<g>\n<rect x=\"" << ox + 2 << "\" y=\"" << oy + 2 << "\" width=\"" << cell - 4 << "\" height=\"" << cell - 4
-        << "\" fill=\"none\" stroke=\"#ccc\"/>\n<text x=\"" << ox + 8 << "\" y=\"" << oy + 14 << "\">#" << k + 1
-        << (r.configurations[k].certified ? " certified" : " not certified") << ", residual " << residual_text(r.configurations[k].max_residual)
-        << "</text>\n";
-    std::size_t bi = 0;
-    for (const auto& b : scene.bodies) {
-      const char* col = colours[bi++ % 8];
-      for (std::size_t i = 0; i < b.points.size(); ++i)
-        for (std::size_t j = i + 1; j < b.points.size(); ++j) {
-          auto a = q.find(b.points[i].label), c = q.find(b.points[j].label);
-          if (a == q.end() || c == q.end()) continue;
-          out << "<line x1=\"" << X(a->second) << "\" y1=\"" << Y(a->second) << "\" x2=\"" << X(c->second) << "\" y2=\"" << Y(c->second)
-              << "\" stroke=\"" << col << "\" stroke-width=\"1.3\"/>\n";
-        }
+  }
+  // the plot
+  double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
+  for (const auto& c : r.curves)
+    for (const auto& f : c.configurations) {
+      const double v[2] = {f.points[ax.first][ax.second], f.points[ay.first][ay.second]};
+      for (int a = 0; a < 2; ++a) { lo[a] = std::min(lo[a], v[a]); hi[a] = std::max(hi[a], v[a]); }
     }
-    for (const auto& d : scene.distances) {
-      auto a = q.find(d.a), c = q.find(d.b);
-      if (a == q.end() || c == q.end()) continue;
-      out << "<line x1=\"" << X(a->second) << "\" y1=\"" << Y(a->second) << "\" x2=\"" << X(c->second) << "\" y2=\"" << Y(c->second)
-          << "\" stroke=\"#555\" stroke-dasharray=\"4 3\"/>\n";
-    }
-    for (const auto& p : q) {
-      bool shared = uses[p.first] > 1;
-      out << "<circle cx=\"" << X(p.second) << "\" cy=\"" << Y(p.second) << "\" r=\"" << (shared ? 3.5 : 2) << "\" fill=\""
-          << (shared ? "black" : "white") << "\" stroke=\"black\"/>\n";
-      if (shared) out << "<text x=\"" << X(p.second) + 4 << "\" y=\"" << Y(p.second) - 4 << "\">" << p.first << "</text>\n";
-    }
-    out << "</g>\n";
+  const double px = 40, py = 30 + n * (cell + 20) + 20, side = plot_size - 20;
+  const double span = std::max(1e-300, std::max(hi[0] - lo[0], hi[1] - lo[1]));
+  auto X = [&](double v) { return px + (v - lo[0]) / span * side; };
+  auto Y = [&](double v) { return py + side - (v - lo[1]) / span * side; };
+  out << "<rect x=\"" << px << "\" y=\"" << py << "\" width=\"" << side << "\" height=\"" << side << "\" fill=\"none\" stroke=\"#999\"/>\n"
+      << "<text x=\"" << px << "\" y=\"" << py + side + 16 << "\">" << xname << " from " << short_number(lo[0]) << " (equal scales; "
+      << yname << " up from " << short_number(lo[1]) << ")</text>\n";
+  for (std::size_t k = 0; k < n; ++k) {
+    const auto& c = r.curves[k];
+    out << "<polyline fill=\"none\" stroke=\"" << colours[k % 8] << "\" stroke-width=\"1.2\" points=\"";
+    for (const auto& f : c.configurations) out << X(f.points[ax.first][ax.second]) << "," << Y(f.points[ay.first][ay.second]) << " ";
+    if (c.closed) out << X(c.configurations.front().points[ax.first][ax.second]) << "," << Y(c.configurations.front().points[ay.first][ay.second]);
+    out << "\"/>\n";
   }
   out << "</svg>\n";
 }
@@ -240,7 +352,11 @@ int solve(const RI::Scene& scene, const RI::Rigid_body_collection<Traits>& input
       return near_distance(a.configuration, ref, ca) < near_distance(b.configuration, ref, cb);
     });
   }
-  if (!o.svg.empty())
+  if (!o.svg.empty() && !r.curves.empty())
+    write_curves_svg(o.svg, scene, r, (scene.name.empty() ? scene_file : scene.name) + ": " + std::to_string(r.curves.size()) +
+                                           " curve branch(es) of configurations" + (r.complete() ? ", complete" : ", NOT complete"),
+                     o.plot);
+  else if (!o.svg.empty())
     write_svg(o.svg, scene, r, (scene.name.empty() ? scene_file : scene.name) + ": " + std::to_string(r.configurations.size()) +
                                   " configuration(s)" + (r.complete() ? ", complete" : ", NOT complete"));
   const auto& st = r.statistics;
@@ -294,9 +410,34 @@ int solve(const RI::Scene& scene, const RI::Rigid_body_collection<Traits>& input
       un.push_back(uj);
     }
     j["unresolved"] = un;
+    nlohmann::ordered_json cj = nlohmann::ordered_json::array();
+    for (const auto& c : r.curves) {
+      nlohmann::ordered_json x;
+      x["certified"] = c.certified;
+      x["closed"] = c.closed;
+      x["ends"] = {curve_end_name(c.ends[0]), curve_end_name(c.ends[1])};
+      x["note"] = c.note.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(c.note);
+      x["max_residual"] = c.max_residual;
+      if (!scene.inequalities.empty()) x["on_inequality_boundary"] = c.on_inequality_boundary;
+      // each point's path along the branch, in the frame of the configurations
+      nlohmann::ordered_json paths = nlohmann::ordered_json::object();
+      const auto& f0 = c.configurations.front();
+      for (std::size_t i = 0; i < f0.labels.size(); ++i) {
+        if (!f0.placed[i]) continue;
+        nlohmann::ordered_json path = nlohmann::ordered_json::array();
+        for (const auto& f : c.configurations) path.push_back({f.points[i][0], f.points[i][1], f.points[i][2]});
+        paths[f0.labels[i]] = path;
+      }
+      x["points"] = paths;
+      nlohmann::ordered_json pieces = nlohmann::ordered_json::array();
+      for (const auto& p : c.pieces) pieces.push_back({{"charts", p.charts}, {"parameters", p.parameters}});
+      x["pieces"] = pieces;
+      cj.push_back(x);
+    }
+    j["curves"] = cj;
     j["stats"] = {{"chart_combinations", st.chart_combinations}, {"excluded_at_once", st.excluded_at_once},
                   {"boxes", st.boxes}, {"krawczyk_tests", st.krawczyk_tests}, {"roots", st.roots},
-                  {"duplicates_merged", st.duplicates}, {"spurious_rejected", st.spurious},
+                  {"duplicates_merged", st.duplicates}, {"spurious_rejected", st.spurious}, {"curve_boxes", st.curve_boxes},
                   {"seconds", {{"analysis", analysis_seconds}, {"reduce", st.reduce_seconds}, {"solve", st.solve_seconds},
                                {"verify", st.verify_seconds}}}};
     std::cout << j.dump(2) << "\n";
@@ -309,7 +450,7 @@ int solve(const RI::Scene& scene, const RI::Rigid_body_collection<Traits>& input
   for (const auto& q : scene.inequalities)
     std::cout << "inequality: det(" << q.points[1] << " - " << q.points[0] << ", " << q.points[2] << " - " << q.points[0] << ", "
               << q.points[3] << " - " << q.points[0] << ") " << (q.negative ? "<= 0" : ">= 0") << "\n";
-  std::cout << r.configurations.size() << " configuration(s)";
+  std::cout << r.configurations.size() << " configuration(s)" << (r.curves.empty() ? "" : " and " + std::to_string(r.curves.size()) + " curve branch(es)");
   if (r.complete()) std::cout << ", all certified: complete\n";
   else std::cout << "; the result is NOT complete" << (r.unresolved.empty() ? "" : " (unresolved regions below)") << "\n";
   std::size_t k = 0;
@@ -332,6 +473,19 @@ int solve(const RI::Scene& scene, const RI::Rigid_body_collection<Traits>& input
       if (x.configuration.placed[i])
         std::cout << "    " << x.configuration.labels[i] << " = (" << x.configuration.points[i][0] << ", " << x.configuration.points[i][1] << ", "
                   << x.configuration.points[i][2] << ")\n";
+  }
+  if (!r.curves.empty()) {
+    std::cout << "\n" << r.curves.size() << " curve branch(es) of configurations (the scene moves):\n";
+    for (std::size_t i = 0; i < r.curves.size(); ++i) {
+      const auto& c = r.curves[i];
+      std::cout << "  branch " << i + 1 << (c.certified ? " (certified)" : " (NOT certified)") << ": " << c.configurations.size() << " frames in "
+                << c.pieces.size() << " chart piece(s), ";
+      if (c.closed) std::cout << "closed";
+      else std::cout << "from " << curve_end_name(c.ends[0]) << " to " << curve_end_name(c.ends[1]);
+      std::cout << ", max residual " << std::setprecision(3) << c.max_residual << std::setprecision(10)
+                << (c.on_inequality_boundary ? ", clipped by an inequality" : "") << "\n";
+      if (!c.note.empty()) std::cout << "    note: " << c.note << "\n";
+    }
   }
   if (!r.unresolved.empty()) {
     std::cout << "\nunresolved regions:\n";

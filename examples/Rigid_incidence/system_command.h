@@ -42,16 +42,6 @@ nlohmann::ordered_json interval_json(const IT& x)
   return nlohmann::ordered_json::array({O::lower_double(x), O::upper_double(x)});
 }
 
-inline const char* curve_end_name(RI::Curve_end e)
-{
-  switch (e) {
-  case RI::Curve_end::CLOSED: return "closed";
-  case RI::Curve_end::BOUNDARY: return "boundary";
-  case RI::Curve_end::UNRESOLVED: return "unresolved";
-  default: return "inequality";
-  }
-}
-
 // the undecomposed solver's or the tracer's regions, in the plan result's shape
 template <class IT>
 void add_unresolved(RI::Plan_result<IT>& r, const std::vector<RI::Solver_unresolved<IT>>& regions)
@@ -169,7 +159,7 @@ int run(const RI::Polynomial_system_file& file, const RI::Solution_plan& plan, c
     for (const auto& c : curves.curves) {
       nlohmann::ordered_json ends = nlohmann::ordered_json::array(), regions = nlohmann::ordered_json::array();
       for (int e = 0; e < 2; ++e) {
-        ends.push_back(curve_end_name(c.ends[e]));
+        ends.push_back(solve_command::curve_end_name(c.ends[e]));
         regions.push_back(c.end_region[e] < 0 ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(c.end_region[e]));
       }
       cj.push_back({{"certified", c.certified},
@@ -222,7 +212,7 @@ int run(const RI::Polynomial_system_file& file, const RI::Solution_plan& plan, c
       const auto& c = curves.curves[i];
       std::cout << "  branch " << i + 1 << (c.certified ? " (certified)" : " (not certified)") << ": " << c.points.size() << " points, ";
       if (c.closed) std::cout << "closed";
-      else std::cout << "from " << curve_end_name(c.ends[0]) << " to " << curve_end_name(c.ends[1]);
+      else std::cout << "from " << solve_command::curve_end_name(c.ends[0]) << " to " << solve_command::curve_end_name(c.ends[1]);
       std::cout << ", max residual " << c.max_residual << (c.on_inequality_boundary ? ", clipped by an inequality" : "") << "\n";
     }
   }

@@ -97,7 +97,7 @@ struct Solution_curve
   /// to exactly one arc on each side of its face
   bool certified = true;
   bool closed = false;                 ///< a loop (then `ends` are both `CLOSED`)
-  Curve_end ends[2] = {Curve_end::CLOSED, Curve_end::CLOSED};
+  Curve_end ends[2] = {Curve_end::CLOSED, Curve_end::CLOSED};  ///< how the polyline starts and ends
   /// for an `UNRESOLVED` end, the index of the region in `Curve_result::unresolved`, else -1
   long end_region[2] = {-1, -1};
   /// the regular boxes the branch runs through: the branch lies in their union
@@ -136,7 +136,7 @@ struct Curve_result
   /// parametrization at the minimal width"), crossings that could not be certified at the
   /// minimal width, or boxes left when the budget ran out (`PENDING`)
   std::vector<Solver_unresolved<IT>> unresolved;
-  Curve_statistics statistics;
+  Curve_statistics statistics;  ///< counters of the trace
   /// no unresolved region is left and every branch is certified
   bool complete() const
   {

@@ -4,12 +4,17 @@
 // The whole pipeline after the analysis: the reduced system in every chart combination (and
 // every placement of a body known only by distances), the subdivision solver on each,
 // back-substitution, verification in the original system, and one list of configurations in
-// which roots found twice (on chart borders) are merged by comparing configurations.
+// which roots found twice (on chart borders) are merged by comparing configurations. A scene
+// with one degree of freedom (one equation fewer than parameters), and a scene the dof count
+// calls finite whose solver finds a curve of solutions (the symmetric quad), gives curves of
+// configurations instead: traced per chart combination by trace_curves and joined across
+// chart borders by comparing configurations.
 
 #ifndef CGAL_RIGID_INCIDENCE_SOLVE_SCENE_H
 #define CGAL_RIGID_INCIDENCE_SOLVE_SCENE_H
 
 #include <CGAL/Rigid_incidence/Configuration.h>
+#include <CGAL/Rigid_incidence/Curve_tracer.h>
 #include <CGAL/Rigid_incidence/Reduced_system.h>
 #include <CGAL/Rigid_incidence/Subdivision_solver.h>
 #include <CGAL/Rigid_incidence/enclose_coordinates.h>
@@ -85,6 +90,33 @@ struct Scene_unresolved
 };
 
 /// \ingroup PkgRigidIncidenceSolver
+/// The part of a `Scene_curve` traced in one chart combination.
+struct Scene_curve_piece
+{
+  std::vector<int> charts;                          ///< chart combination
+  std::vector<int> placements;                      ///< placement variant per body
+  std::vector<std::vector<double>> parameters;      ///< the polyline in this chart's parameters
+};
+
+/// \ingroup PkgRigidIncidenceSolver
+/// One branch of a curve of configurations: the motion of a scene with one degree of freedom.
+struct Scene_curve
+{
+  /// the topology is certified: every piece certified by `trace_curves()` and joined to the
+  /// next across a chart border where both end in the same configuration
+  bool certified = true;
+  bool closed = false;                              ///< a loop
+  Curve_end ends[2] = {Curve_end::CLOSED, Curve_end::CLOSED};  ///< `BOUNDARY` does not occur (charts cover every rotation)
+  std::vector<Configuration> configurations;        ///< the scene along the branch, in order
+  std::vector<Scene_curve_piece> pieces;            ///< the chart pieces, in order
+  double max_residual = 0;                          ///< largest residual in the original system along it
+  bool on_inequality_boundary = false;              ///< an inequality clips it (to the tracer's minimal width)
+  /// empty, or what limits the claim: e.g. the equation left out to trace a curve of a square
+  /// system (checked to vanish at every point, not proved)
+  std::string note;
+};
+
+/// \ingroup PkgRigidIncidenceSolver
 /// Statistics of `solve_scene()`.
 struct Scene_solve_statistics
 {
@@ -96,6 +128,7 @@ struct Scene_solve_statistics
   std::size_t roots = 0;                   ///< roots before merging
   std::size_t duplicates = 0;              ///< roots merged into a configuration found before
   std::size_t spurious = 0;                ///< roots rejected: a body would have to be mirrored
+  std::size_t curve_boxes = 0;             ///< boxes visited by the curve tracer, all systems
   double reduce_seconds = 0;               ///< building the reduced systems
   double solve_seconds = 0;                ///< the subdivision solver
   double verify_seconds = 0;               ///< back-substitution and residuals
@@ -107,6 +140,9 @@ struct Scene_solve_result
 {
   std::vector<Scene_configuration> configurations; ///< in a stable order (by point coordinates)
   std::vector<Scene_unresolved> unresolved;        ///< unknown and pending regions
+  /// the curves of configurations of a scene with one degree of freedom (or of a scene the dof
+  /// count calls finite that flexes: then `diagnosis` says "positive_dimensional")
+  std::vector<Scene_curve> curves;
   /// empty, or what was found: "positive_dimensional: ...", "under_constrained: ...",
   /// "over_constrained: ..."
   std::string diagnosis;
@@ -119,6 +155,7 @@ struct Scene_solve_result
   {
     if (fast || !unresolved.empty() || !diagnosis.empty()) return false;
     for (const auto& c : configurations) if (!c.certified) return false;
+    for (const auto& c : curves) if (!c.certified) return false;
     return true;
   }
 };
@@ -186,6 +223,147 @@ inline bool verified(const Residual_report& r, double threshold, double size)
   return r.max_incidence <= threshold * size && r.max_distance <= threshold * size * size;
 }
 
+// The equation to leave out of a square system whose solution set is a curve: at the centre
+// of a rank-deficient unresolved region, the largest entry of the Jacobian's left null vector
+// (the equation the others make dependent there); -1 if there is no such region.
+template <class NT, class IT>
+long dependent_equation(const Polynomial_system<NT>& sys, const Solver_result<IT>& res)
+{
+  const std::size_t n = sys.number_of_variables(), m = sys.number_of_equations();
+  for (const auto& u : res.unresolved) {
+    if (!u.rank_deficient) continue;
+    std::vector<double> x;
+    for (const auto& e : u.box) x.push_back(0.5 * CGAL::to_interval(e).first + 0.5 * CGAL::to_interval(e).second);
+    Eigen::MatrixXd J(m, n);
+    for (std::size_t k = 0; k < m; ++k)
+      for (std::size_t v = 0; v < n; ++v) J(k, v) = sys.equations[k].derivative(v).template evaluate<double>(x);
+    Eigen::JacobiSVD<Eigen::MatrixXd> svd(J, Eigen::ComputeFullU);
+    Eigen::VectorXd w = svd.matrixU().col(m - 1);
+    long best = 0;
+    for (std::size_t k = 1; k < m; ++k)
+      if (std::abs(w(long(k))) > std::abs(w(best))) best = long(k);
+    return best;
+  }
+  return -1;
+}
+
+// f vanishes at every point, up to 1e-8 relative to the size of its terms there
+template <class NT>
+bool vanishes_along(const Sparse_polynomial<NT>& f, const std::vector<std::vector<double>>& points)
+{
+  for (const auto& x : points) {
+    double value = 0, size = 0;
+    for (const auto& t : f.terms()) {
+      double m = CGAL::to_double(t.second);
+      for (std::size_t v = 0; v < x.size(); ++v)
+        for (unsigned e = 0; e < t.first[v]; ++e) m *= x[v];
+      value += m;
+      size += std::abs(m);
+    }
+    if (std::abs(value) > 1e-8 * (size + 1e-300)) return false;
+  }
+  return true;
+}
+
+// A branch traced in one chart combination, as configurations.
+struct Scene_piece
+{
+  Scene_curve_piece piece;
+  std::vector<Configuration> configurations;
+  Curve_end ends[2];
+  bool certified = true, closed = false, on_inequality_boundary = false;
+  double max_residual = 0;
+  std::string note;
+};
+
+// Joins the pieces of all chart combinations into branches: a piece ending on its chart's
+// border continues in the piece of another chart that ends in the same configuration (within
+// `tolerance` times the scene's size).
+inline std::vector<Scene_curve> join_pieces(std::vector<Scene_piece>& pieces, double tolerance)
+{
+  const std::size_t N = pieces.size();
+  // partner[2 p + side] = 2 q + side' of the joined end, or -1
+  std::vector<long> partner(2 * N, -1);
+  auto end_conf = [&](std::size_t e) -> const Configuration& {
+    const auto& c = pieces[e / 2].configurations;
+    return e % 2 ? c.back() : c.front();
+  };
+  for (std::size_t e = 0; e < 2 * N; ++e) {
+    if (pieces[e / 2].closed || pieces[e / 2].ends[e % 2] != Curve_end::BOUNDARY || partner[e] >= 0) continue;
+    const double size = configuration_size(end_conf(e));
+    double best = tolerance * size;
+    long at = -1;
+    for (std::size_t f = 0; f < 2 * N; ++f) {
+      if (f == e || pieces[f / 2].closed || pieces[f / 2].ends[f % 2] != Curve_end::BOUNDARY || partner[f] >= 0) continue;
+      if (pieces[f / 2].piece.charts == pieces[e / 2].piece.charts && pieces[f / 2].piece.placements == pieces[e / 2].piece.placements) continue;
+      const double d = configuration_distance(end_conf(e), end_conf(f));
+      if (d <= best) { best = d; at = long(f); }
+    }
+    if (at >= 0) { partner[e] = at; partner[std::size_t(at)] = long(e); }
+  }
+  std::vector<Scene_curve> out;
+  std::vector<char> used(N, 0);
+  auto chain = [&](std::size_t start_piece, int start_side) {
+    Scene_curve c;
+    std::size_t p = start_piece;
+    int side = start_side;  // the end we enter the piece by
+    c.ends[0] = pieces[p].ends[side];
+    while (true) {
+      used[p] = 1;
+      Scene_piece& q = pieces[p];
+      Scene_curve_piece piece = q.piece;
+      std::vector<Configuration> confs = q.configurations;
+      if (side == 1) {
+        std::reverse(piece.parameters.begin(), piece.parameters.end());
+        std::reverse(confs.begin(), confs.end());
+      }
+      c.configurations.insert(c.configurations.end(), confs.begin(), confs.end());
+      c.pieces.push_back(std::move(piece));
+      c.certified = c.certified && q.certified;
+      c.on_inequality_boundary = c.on_inequality_boundary || q.on_inequality_boundary;
+      c.max_residual = (std::max)(c.max_residual, q.max_residual);
+      if (!q.note.empty() && c.note.find(q.note) == std::string::npos) c.note += (c.note.empty() ? "" : "; ") + q.note;
+      const std::size_t leave = 2 * p + (1 - side);
+      const long next = partner[leave];
+      if (next < 0) {
+        c.ends[1] = q.ends[1 - side];
+        // an end on a chart border without a partner in another chart: not accounted for
+        if (c.ends[1] == Curve_end::BOUNDARY) { c.ends[1] = Curve_end::UNRESOLVED; c.certified = false; }
+        break;
+      }
+      if (used[std::size_t(next) / 2]) {
+        c.closed = std::size_t(next) / 2 == start_piece;
+        if (!c.closed) c.certified = false;
+        c.ends[0] = c.ends[1] = Curve_end::CLOSED;
+        break;
+      }
+      p = std::size_t(next) / 2;
+      side = int(std::size_t(next) % 2);
+    }
+    if (c.ends[0] == Curve_end::BOUNDARY) { c.ends[0] = Curve_end::UNRESOLVED; c.certified = false; }
+    out.push_back(std::move(c));
+  };
+  for (std::size_t p = 0; p < N; ++p)
+    if (!used[p] && pieces[p].closed) {
+      used[p] = 1;
+      Scene_curve c;
+      c.closed = true;
+      c.configurations = pieces[p].configurations;
+      c.pieces.push_back(pieces[p].piece);
+      c.certified = pieces[p].certified;
+      c.on_inequality_boundary = pieces[p].on_inequality_boundary;
+      c.max_residual = pieces[p].max_residual;
+      c.note = pieces[p].note;
+      out.push_back(std::move(c));
+    }
+  // chains from a true end first, then the loops made of several pieces
+  for (std::size_t e = 0; e < 2 * N; ++e)
+    if (!used[e / 2] && partner[e] < 0) chain(e / 2, int(e % 2));
+  for (std::size_t p = 0; p < N; ++p)
+    if (!used[p]) chain(p, 0);
+  return out;
+}
+
 } // namespace internal
 
 /*!
@@ -222,7 +400,10 @@ Scene_solve_result solve_scene(const Rigid_body_collection<Traits>& original, co
   st.reduce_seconds += since(t0);
   out.variables = first.parametrization().variable_names();
   out.equations = first.number_of_equations();
-  if (!first.is_square()) {
+  // one equation fewer than parameters and no loose body: the configurations form curves
+  const bool one_dof = !first.is_square() && first.number_of_equations() + 1 == first.number_of_variables() &&
+                       first.loose_bodies().empty() && !parameters.solver.fast;
+  if (!first.is_square() && !one_dof) {
     const std::string d = first.diagnostic();
     out.diagnosis = (first.number_of_equations() < first.number_of_variables() || !first.loose_bodies().empty()
                          ? "under_constrained: "
@@ -244,6 +425,7 @@ Scene_solve_result solve_scene(const Rigid_body_collection<Traits>& original, co
 
   struct Candidate { Scene_configuration s; double size; };
   std::vector<Candidate> found;
+  std::vector<internal::Scene_piece> pieces;
   std::string positive;
   do {
     std::vector<int> charts(radix_c.size(), 0);
@@ -260,7 +442,9 @@ Scene_solve_result solve_scene(const Rigid_body_collection<Traits>& original, co
       st.reduce_seconds += since(t1);
       auto t2 = Clock::now();
       Solver_result<IT> res;
-      if (sys.number_of_variables() == 0) {
+      if (one_dof) {
+        // traced below
+      } else if (sys.number_of_variables() == 0) {
         // one body, or bodies fixed by the placements alone: the configuration is the
         // placement itself (each placement variant is one)
         Solver_root<IT> root;
@@ -292,6 +476,70 @@ Scene_solve_result solve_scene(const Rigid_body_collection<Traits>& original, co
         x.at_centre = at;
         return x;
       };
+      // the solver's or the tracer's regions, with the configuration at each centre
+      auto add_regions = [&](const std::vector<Solver_unresolved<IT>>& regions) {
+        for (const auto& u : regions) {
+            std::vector<std::pair<double, double>> box;
+            std::vector<double> centre;
+            for (const auto& e : u.box) {
+              box.push_back(CGAL::to_interval(e));
+              centre.push_back(0.5 * box.back().first + 0.5 * box.back().second);
+            }
+            out.unresolved.push_back(unresolved(u.kind, u.reason, box, u.boxes, configuration(r, centre)));
+        }
+      };
+      // the curves of this chart combination: the whole system when it has one equation fewer
+      // than parameters; else, when the solver found a curve of solutions (rank n - 1 along a
+      // chain of boxes), the system without the equation the Jacobian's left null vector
+      // weighs most, keeping the branches on which that equation vanishes
+      long left_out = -1;
+      if (!one_dof && res.diagnosis.rfind("positive_dimensional", 0) == 0)
+        left_out = internal::dependent_equation(sys, res);
+      if (one_dof || left_out >= 0) {
+        Polynomial_system<NT> tsys = sys;
+        if (left_out >= 0) {
+          tsys.equations.erase(tsys.equations.begin() + left_out);
+          if (std::size_t(left_out) < tsys.labels.size()) tsys.labels.erase(tsys.labels.begin() + left_out);
+        }
+        Curve_tracer_parameters cp;
+        cp.precision = parameters.solver.precision;
+        cp.maximal_boxes = parameters.solver.maximal_boxes;
+        auto t4 = Clock::now();
+        Curve_result<IT> cr = trace_curves<IT>(tsys, cp);
+        st.solve_seconds += since(t4);
+        st.curve_boxes += cr.statistics.boxes;
+        add_regions(cr.unresolved);
+        for (const auto& c : cr.curves) {
+          internal::Scene_piece q;
+          q.piece.charts = charts;
+          q.piece.placements = placements;
+          q.piece.parameters = c.points;
+          q.ends[0] = c.ends[0];
+          q.ends[1] = c.ends[1];
+          q.closed = c.closed;
+          q.certified = c.certified;
+          q.on_inequality_boundary = c.on_inequality_boundary;
+          if (left_out >= 0) {
+            if (!internal::vanishes_along(sys.equations[std::size_t(left_out)], c.points)) continue;  // not a branch of the scene
+            q.certified = false;
+            q.note = "traced without equation " + std::to_string(left_out + 1) + " (" +
+                     (std::size_t(left_out) < sys.labels.size() ? sys.labels[std::size_t(left_out)] : std::string()) +
+                     "), which vanishes at every point of the branch: checked numerically, not proved";
+          }
+          bool spurious = false;
+          for (const auto& x : c.points) {
+            q.configurations.push_back(configuration(r, x));
+            Residual_report rep = residuals(original, q.configurations.back());
+            if (!internal::verified(rep, parameters.residual_threshold, internal::configuration_size(q.configurations.back()))) {
+              if (rep.mirrored && rep.complete) spurious = true;
+              else q.certified = false;
+            }
+            q.max_residual = (std::max)(q.max_residual, rep.max());
+          }
+          if (spurious) { ++st.spurious; continue; }
+          pieces.push_back(std::move(q));
+        }
+      }
       for (const auto& root : res.roots) {
         ++st.roots;
         Scene_configuration s;
@@ -325,20 +573,17 @@ Scene_solve_result solve_scene(const Rigid_body_collection<Traits>& original, co
         }
         if (!merged) found.push_back({s, size});
       }
-      for (const auto& u : res.unresolved) {
-        std::vector<std::pair<double, double>> box;
-        std::vector<double> centre;
-        for (const auto& e : u.box) {
-          box.push_back(CGAL::to_interval(e));
-          centre.push_back(0.5 * box.back().first + 0.5 * box.back().second);
-        }
-        out.unresolved.push_back(unresolved(u.kind, u.reason, box, u.boxes, configuration(r, centre)));
-      }
+      add_regions(res.unresolved);
       st.verify_seconds += since(t3);
     } while (internal::next_combination(charts, radix_c));
   } while (internal::next_combination(placements, radix_p));
   if (!positive.empty()) out.diagnosis = positive;
   for (auto& f : found) out.configurations.push_back(std::move(f.s));
+  out.curves = internal::join_pieces(pieces, 1e-7);
+  // a stable order: by the first configuration's points
+  std::sort(out.curves.begin(), out.curves.end(), [](const Scene_curve& a, const Scene_curve& b) {
+    return a.configurations.front().points < b.configurations.front().points;
+  });
   // a stable order: by the coordinates of the points, in label order
   std::sort(out.configurations.begin(), out.configurations.end(), [](const Scene_configuration& a, const Scene_configuration& b) {
     const auto& p = a.configuration.points;

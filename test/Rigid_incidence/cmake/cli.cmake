@@ -330,6 +330,19 @@ if(TARGET rigid_incidence)
   add_test(NAME cli_solve_bad_near
            COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${_ri_d}/tetra.json|--near|${_ri_d}/tetra.json" -DEXPECT_RC=2
                    "-DEXPECT_STDERR=expected \\{\"points\"" -P ${_ri_cli_script})
+  # one degree of freedom: the scene moves, its configurations come as curves
+  add_test(NAME cli_solve_one_dof_curves
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${_ri_d}/quad_one_dof.json|--json" -DEXPECT_RC=0
+                   "-DEXPECT_STDOUT=\"complete\": true&&\"curves\": .\n +.\n +\"certified\": true,\n +\"closed\": true,&&\"E1\": .\n +.\n&&\"pieces\": &&\"curve_boxes\": [1-9]"
+                   -P ${_ri_cli_script})
+  add_test(NAME cli_solve_one_dof_svg
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${_ri_d}/quad_one_dof.json|--svg|${CMAKE_CURRENT_BINARY_DIR}/cli_quad_one_dof.svg|--plot|E1.x,E1.z" -DEXPECT_RC=0
+                   "-DEXPECT_STDOUT=4 curve branch\\(es\\) of configurations&&branch 1 \\(certified\\): [0-9]+ frames in [0-9]+ chart piece\\(s\\), closed"
+                   "-DCHECK_FILE=${CMAKE_CURRENT_BINARY_DIR}/cli_quad_one_dof.svg"
+                   "-DCHECK_FILE_REGEX=^<svg&&4 curve branch&&branch 4, certified, closed&&<polyline&&E1.x from" -P ${_ri_cli_script})
+  add_test(NAME cli_solve_bad_plot
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${_ri_d}/quad_one_dof.json|--svg|${CMAKE_CURRENT_BINARY_DIR}/cli_bad_plot.svg|--plot|Q9.x,E1.z" -DEXPECT_RC=2
+                   "-DEXPECT_STDERR=--plot: no placed point 'Q9'" -P ${_ri_cli_script})
   add_test(NAME cli_solve_under_constrained
            COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${_ri_d}/bar_end.json|--json" -DEXPECT_RC=0
                    "-DEXPECT_STDOUT=\"complete\": false&&\"diagnosis\": \"under_constrained: " -P ${_ri_cli_script})
