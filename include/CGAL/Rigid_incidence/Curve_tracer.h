@@ -116,6 +116,7 @@ struct Curve_statistics
   std::size_t excluded_by_inequality = 0; ///< boxes where some inequality is < 0
   std::size_t regular = 0;            ///< leaf boxes proved regular, with their arcs
   std::size_t splits = 0;             ///< boxes split in two
+  std::size_t reductions = 0;         ///< slabs without curve points cut off a box (domain reduction)
   std::size_t face_solves = 0;        ///< zero-dimensional face systems solved
   std::size_t arcs = 0;               ///< arcs between crossings
   std::size_t crossings = 0;          ///< crossing points certified (counted per box)
@@ -169,16 +170,21 @@ template <class IT> struct Dense_polynomial
       power[at] = O::from(t.second);
     }
   }
-  // the hull of the Bernstein coefficients on the box [lo, hi] (per global variable)
-  IT range(const std::vector<typename O::Bound>& lo, const std::vector<typename O::Bound>& hi) const
+  // the Bernstein coefficients on the box [lo, hi] (per global variable)
+  std::vector<IT> bernstein(const std::vector<typename O::Bound>& lo, const std::vector<typename O::Bound>& hi) const
   {
-    if (shape.variables.empty()) return power[0];
     std::vector<IT> l, w;
     for (std::size_t v : shape.variables) {
       l.push_back(O::point(lo[v]));
       w.push_back(O::point(hi[v]) - O::point(lo[v]));
     }
-    std::vector<IT> b = to_bernstein(shape, power, l, w);
+    return to_bernstein(shape, power, l, w);
+  }
+  // the hull of the Bernstein coefficients on the box [lo, hi] (per global variable)
+  IT range(const std::vector<typename O::Bound>& lo, const std::vector<typename O::Bound>& hi) const
+  {
+    if (shape.variables.empty()) return power[0];
+    std::vector<IT> b = bernstein(lo, hi);
     typename O::Bound mn = O::lower(b[0]), mx = O::upper(b[0]);
     for (const IT& x : b) {
       if (O::lower(x) < mn) mn = O::lower(x);
@@ -270,6 +276,7 @@ public:
   std::vector<Arc> arcs;
   std::vector<std::size_t> crossing_box;  // global crossing id -> box
   Curve_result<IT> result;
+  Clip_workspace clip_work;
 
   Curve_tracer_run(const Polynomial_system<NT>& s, const Curve_tracer_parameters& p) : sys(s), P(p), n(s.number_of_variables())
   {
@@ -308,10 +315,9 @@ public:
       }
       ++result.statistics.boxes;
       process(b);
-      if (boxes[b].state == SPLIT) {
-        todo.push_back(boxes[b].child[1]);
-        todo.push_back(boxes[b].child[0]);
-      }
+      if (boxes[b].state == SPLIT)
+        for (int k = 1; k >= 0; --k)
+          if (boxes[boxes[b].child[k]].state == OPEN) todo.push_back(boxes[b].child[k]);
     }
     assemble();
     result.statistics.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -343,7 +349,7 @@ private:
     }
     static const double offsets[] = {0.0123, -0.0217, 0.0311, -0.0089, 0.0167, -0.0271, 0.0053, -0.0149};
     const double lo = O::to_double(boxes[b].lo[s]), hi = O::to_double(boxes[b].hi[s]);
-    double c = lo + (hi - lo) * (0.5 + offsets[boxes[b].depth % 8]);
+    double c = lo + (hi - lo) * (0.5 + offsets[(boxes[b].depth + 3 * s) % 8]);
     if (!(c > lo && c < hi)) c = 0.5 * lo + 0.5 * hi;
     if (!(c > lo && c < hi)) {  // cannot be split in double
       boxes[b].state = UNRESOLVED;
@@ -364,6 +370,65 @@ private:
     boxes.push_back(l);
     boxes.push_back(r);
     ++result.statistics.splits;
+  }
+
+  // -1: no curve point in the box; 1: the box was cut in two, the part without curve points
+  // excluded; 0: no cut worth it (an empty slab of less than a fifth of a side)
+  int reduce(std::size_t b)
+  {
+    Box& B = boxes[b];
+    std::vector<double> lo(n), hi(n);
+    for (std::size_t v = 0; v < n; ++v) { lo[v] = O::to_double(B.lo[v]); hi[v] = O::to_double(B.hi[v]); }
+    std::vector<double> keep_lo = lo, keep_hi = hi, tu, tv;
+    for (const auto& f : eq) {
+      if (f.shape.variables.empty()) continue;
+      if (!clip_axes(f.shape, f.bernstein(B.lo, B.hi), tu, tv, clip_work)) return -1;
+      for (std::size_t k = 0; k < f.shape.variables.size(); ++k) {
+        const std::size_t v = f.shape.variables[k];
+        const double w = hi[v] - lo[v];
+        // 1e-12 of the side covers the rounding of lo + t w in any rounding mode
+        keep_lo[v] = (std::max)(keep_lo[v], lo[v] + (std::max)(0.0, tu[k] - 1e-12) * w);
+        keep_hi[v] = (std::min)(keep_hi[v], lo[v] + (std::min)(1.0, tv[k] + 1e-12) * w);
+      }
+    }
+    // the cut goes through the middle of the empty slab, not along the hull: a face on the
+    // hull could touch the curve (a tangency, which no face solve certifies), a face inside
+    // the slab meets no curve point at all
+    // a variable already ten times thinner than the widest (relative to the search box) is
+    // not cut further: a curve in a hyperplane x_v = c would otherwise be approached forever
+    double widest_relative = 0;
+    for (std::size_t v = 0; v < n; ++v)
+      widest_relative = (std::max)(widest_relative, (hi[v] - lo[v]) / (sys.box[v].second - sys.box[v].first));
+    std::size_t best = n;
+    double gain = 0.2, at = 0;
+    bool upper = false;
+    for (std::size_t v = 0; v < n; ++v) {
+      if (keep_lo[v] > keep_hi[v]) return -1;
+      const double w = hi[v] - lo[v];
+      if (w / (sys.box[v].second - sys.box[v].first) < 0.1 * widest_relative) continue;
+      // where in the slab: a fraction that differs between variables and depths, so that two
+      // variables equal along the curve (a symmetric mechanism) are not cut at the same value,
+      // which would put a crossing on a box edge
+      const double f = 0.35 + 0.3 * std::abs(std::fmod(std::sin(12.9898 * double(v + 1) + 78.233 * double(B.depth)) * 43758.5453, 1.0));
+      if ((keep_lo[v] - lo[v]) / w > gain) { gain = (keep_lo[v] - lo[v]) / w; best = v; at = lo[v] + f * (keep_lo[v] - lo[v]); upper = false; }
+      if ((hi[v] - keep_hi[v]) / w > gain) { gain = (hi[v] - keep_hi[v]) / w; best = v; at = hi[v] - f * (hi[v] - keep_hi[v]); upper = true; }
+    }
+    if (best == n || !(at > lo[best] && at < hi[best])) return 0;
+    Box l = B, r = B;
+    l.state = r.state = OPEN;
+    l.depth = r.depth = B.depth + 1;
+    l.hi[best] = r.lo[best] = O::bound_from_double(at);
+    (upper ? r : l).state = EXCLUDED;
+    ++result.statistics.excluded;
+    B.state = SPLIT;
+    B.split_variable = best;
+    B.split_value = O::bound_from_double(at);
+    B.child[0] = boxes.size();
+    B.child[1] = boxes.size() + 1;
+    boxes.push_back(l);  // B is not used after this
+    boxes.push_back(r);
+    ++result.statistics.reductions;
+    return 1;
   }
 
   // split, or leave the box unresolved with `why` at the minimal width
@@ -488,7 +553,15 @@ private:
       if (!certainly_positive(r) && O::lower(r) < 0) straddling.push_back(q);
     }
     const bool small = width(B) <= min_width;
-    // (2) regularity
+    // (2) domain reduction: the equations' projected control polygons (unpreconditioned)
+    // bound where the curve can be in each variable; a large enough empty slab is cut off
+    // as an excluded box (the tree of boxes keeps tiling the search box)
+    if (!small) {
+      const int cut = reduce(b);
+      if (cut < 0) { boxes[b].state = EXCLUDED; ++result.statistics.excluded; return; }
+      if (cut > 0) return;
+    }
+    // (3) regularity
     std::vector<double> centre(n);
     for (std::size_t v = 0; v < n; ++v) centre[v] = 0.5 * O::to_double(B.lo[v]) + 0.5 * O::to_double(B.hi[v]);
     std::vector<std::size_t> order = parameter_order(centre);
@@ -499,11 +572,11 @@ private:
       if (contraction(A, Y, M) < 1) { regular = true; B.parameter = order[c]; }
     }
     if (!regular) { split_or_give_up(b, "singular: no regular parametrization at the minimal width"); return; }
-    // (3) crossings on the faces
+    // (4) crossings on the faces
     std::vector<Crossing> found;
     std::string why;
     if (!face_crossings(B, found, why)) { split_or_give_up(b, why); return; }
-    // (4) entries and exits alternate in increasing x_j
+    // (5) entries and exits alternate in increasing x_j
     const std::size_t j = B.parameter;
     std::sort(found.begin(), found.end(), [&](const Crossing& x, const Crossing& y) {
       return O::lower_double(x.enclosure[j]) + O::upper_double(x.enclosure[j]) < O::lower_double(y.enclosure[j]) + O::upper_double(y.enclosure[j]);
@@ -516,7 +589,7 @@ private:
       }
     }
     if (found.size() % 2) { split_or_give_up(b, "crossings not certified"); return; }
-    // (5) an inequality whose range in the box contains 0: where the curve meets g = 0 (the
+    // (6) an inequality whose range in the box contains 0: where the curve meets g = 0 (the
     // roots of the equations and g together) the box is split down to the minimal width;
     // where it does not, g keeps one sign along each arc, read at the arc's first crossing
     std::vector<char> keep(found.size() / 2, 1);
@@ -906,14 +979,25 @@ private:
           if (!used[a]) walk(r, a);
     for (std::size_t a = 0; a < arcs.size(); ++a)
       if (!used[a]) walk(find(arcs[a].from), a);
-    // a piece that leaves a singular region only to come back to it, never farther than the
-    // region's own width, is part of that region: the region grows to hold its boxes
+    // an open piece that never gets farther from an unresolved region than the region's own
+    // width (it leaves the region to come back, or is clipped by an inequality next to it) is
+    // part of that region: the region grows to hold its boxes
     std::vector<Solution_curve<IT>> kept;
     for (auto& c : result.curves) {
-      bool fold = !c.closed && c.ends[0] == Curve_end::UNRESOLVED && c.ends[1] == Curve_end::UNRESOLVED && c.end_region[0] >= 0 &&
-                  c.end_region[0] == c.end_region[1];
+      long region = c.ends[0] == Curve_end::UNRESOLVED ? c.end_region[0] : c.ends[1] == Curve_end::UNRESOLVED ? c.end_region[1] : -1;
+      if (region < 0 && !c.closed)  // both ends elsewhere: the nearest region to its first point
+        for (std::size_t k = 0; k < result.unresolved.size() && region < 0; ++k) {
+          bool near = true;
+          for (std::size_t v = 0; v < n; ++v) {
+            const double lo = O::lower_double(result.unresolved[k].box[v]), hi = O::upper_double(result.unresolved[k].box[v]);
+            if (c.points.front()[v] < lo - (hi - lo) || c.points.front()[v] > hi + (hi - lo)) near = false;
+          }
+          if (near) region = long(k);
+        }
+      bool fold = !c.closed && region >= 0 && (c.ends[0] != Curve_end::UNRESOLVED || c.end_region[0] == region) &&
+                  (c.ends[1] != Curve_end::UNRESOLVED || c.end_region[1] == region);
       if (fold) {
-        Solver_unresolved<IT>& u = result.unresolved[std::size_t(c.end_region[0])];
+        Solver_unresolved<IT>& u = result.unresolved[std::size_t(region)];
         for (const auto& p : c.points)
           for (std::size_t v = 0; v < n; ++v) {
             const double lo = O::lower_double(u.box[v]), hi = O::upper_double(u.box[v]), w = hi - lo;

@@ -36,14 +36,19 @@ struct Subdivision_solver_parameters
   double tolerance = 1e-12;
   /// A box at most this wide in every variable that is neither excluded nor certified is not
   /// split further: it becomes an `UNKNOWN` box. 0: the default, 1e-9 times the widest
-  /// variable of the initial box.
+  /// variable of the initial box in double precision, and 2^(-(p - 53) / 2) times that with
+  /// `CGAL::Gmpfi` at p > 53 bits (finer with the precision, so that close roots the
+  /// arithmetic can separate are not kept in one box).
   double minimal_width = 0;
   /// A box at most this wide in every variable on which the Jacobian may be singular (the
   /// Krawczyk operator does not contract) becomes an `UNKNOWN` box with reason "possible
   /// multiple root" without further splitting (a multiple root, or a point of a solution
   /// curve). 0: the default, 1e-6 times the widest variable of the initial box; negative:
   /// split such boxes down to `minimal_width` too. The retry at a higher precision splits down
-  /// to the minimal width, so two simple roots closer than this are still separated there.
+  /// to the minimal width, so two simple roots closer than this are still separated there;
+  /// where there is no higher precision to try (interval coefficients, `maximal_precision`
+  /// 0), a small cluster of such boxes is solved again at the working precision down to the
+  /// minimal width.
   double singular_width = 0;
   /// Bits of the MPFR mantissa when the interval type is `CGAL::Gmpfi` (ignored for
   /// `CGAL::Interval_nt`).
@@ -136,7 +141,7 @@ struct Solver_statistics
   std::size_t krawczyk_tests = 0;   ///< existence / uniqueness tests
   std::size_t certified_boxes = 0;  ///< boxes certified (before duplicates were merged)
   std::size_t duplicates = 0;       ///< certified roots merged into one found before
-  std::size_t precision_retries = 0;///< boxes solved again at a higher precision
+  std::size_t precision_retries = 0;///< clusters of unknown boxes solved again (at a higher precision, or at the working precision down to the minimal width)
   std::size_t maximal_depth = 0;    ///< deepest subdivision level
   double seconds = 0;               ///< wall-clock time of the solve
 };

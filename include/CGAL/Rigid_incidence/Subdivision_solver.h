@@ -9,10 +9,11 @@
 // Per box: (1) exclusion: some equation's Bernstein coefficients share a strict sign;
 // (2) domain reduction: projected-polyhedron clipping of the equations preconditioned by the
 // inverse Jacobian at the box centre (so near a simple root each preconditioned equation is
-// nearly x_j - x_j*, and the clip converges quadratically); (3) certification: the Krawczyk
+// nearly x_j - x_j*, and the clip converges quadratically), and where that Jacobian is nearly
+// singular also by a regularized inverse; (3) certification: the Krawczyk
 // operator on a slightly inflated box (so a root on a face is certified in one box) proves
 // existence and uniqueness, and interval Newton (Krawczyk contraction) then tightens the
-// enclosure to the tolerance; (4) otherwise split at the midpoint of the widest variable
+// enclosure to the tolerance; a Krawczyk operator that misses its box excludes it; (4) otherwise split at the midpoint of the widest variable
 // (relative to the initial box) by de Casteljau, or stop at the minimal width (unknown).
 
 #ifndef CGAL_RIGID_INCIDENCE_SUBDIVISION_SOLVER_H
@@ -185,6 +186,7 @@ private:
     double min_width;
     double singular_width;
     double last_contraction = 0;          // ||I - Y J(X)|| of the last Krawczyk test
+    bool certify_excluded = false;        // the last certify() proved its node root-free
     Shape full;                           // all variables, the highest degree of each
     bool precondition;
     std::vector<internal::Embedding<IT>> embedding;  // per equation: its array over `full`
@@ -205,6 +207,7 @@ private:
     Solver_result<IT> result;
     std::chrono::steady_clock::time_point start;
     std::function<void(const std::vector<Bound>&, const std::vector<Bound>&, Solver_result<IT>&)> retry;
+    bool same_precision_retry = false;    // `retry` is at the working precision
 
     template <class NT>
     Run(const Subdivision_solver& s, const Polynomial_system<NT>& sys) : P(s.p_), n(sys.number_of_variables())
@@ -228,7 +231,10 @@ private:
         initial_width.push_back(sys.box[j].second - sys.box[j].first);
         widest = (std::max)(widest, initial_width.back());
       }
-      min_width = P.minimal_width > 0 ? P.minimal_width : 1e-9 * widest;
+      // the default: 1e-9 in double, and finer with the precision (its square root, as the
+      // resolvable separation of two close roots): 1e-9 of the box at 200 bits would keep two
+      // roots 1e-14 apart in one box however fine the arithmetic
+      min_width = P.minimal_width > 0 ? P.minimal_width : 1e-9 * widest * std::ldexp(1.0, -int((std::max)(O::bits(), 53u) - 53) / 2);
       singular_width = P.singular_width > 0 ? P.singular_width : P.singular_width < 0 ? 0 : 1e-6 * widest;
       singular_width = (std::max)(singular_width, min_width);
       if constexpr (std::is_same<NT, CGAL::Gmpq>::value || std::is_same<NT, double>::value) {
@@ -276,6 +282,27 @@ private:
           };
         }
 #endif
+      }
+      if (!retry && !P.fast && singular_width > min_width) {
+        // no higher precision to try (interval coefficients, or the retry itself): a small
+        // cluster stopped as a possible multiple root may be simple roots closer than the
+        // singular width, so solve it again at this precision down to the minimal width
+        same_precision_retry = true;
+        retry = [&sys, this](const std::vector<Bound>& lo, const std::vector<Bound>& hi, Solver_result<IT>& out) {
+          Polynomial_system<NT> sub = sys;
+          for (std::size_t j = 0; j < n; ++j) {
+            sub.box[j] = {std::nextafter(O::to_double(lo[j]), -std::numeric_limits<double>::infinity()),
+                          std::nextafter(O::to_double(hi[j]), std::numeric_limits<double>::infinity())};
+            sub.box[j].first = (std::max)(sub.box[j].first, O::to_double(dlo[j]));
+            sub.box[j].second = (std::min)(sub.box[j].second, O::to_double(dhi[j]));
+          }
+          Subdivision_solver_parameters q = P;
+          q.maximal_precision = 0;
+          q.minimal_width = min_width;
+          q.singular_width = -1;
+          q.maximal_boxes = P.maximal_boxes / 8 + 1;
+          out = Subdivision_solver<IT>(q).solve(sub);
+        };
       }
     }
 
@@ -490,6 +517,7 @@ private:
         bool below = true;
         for (std::size_t j = 0; j < n && below; ++j) below = width(x, j) <= singular_width;
         if (P.fast ? polish(x) : certify(x, !small && !below)) return;
+        if (!P.fast && certify_excluded) { ++result.statistics.excluded; return; }
         // a box this small on which the Jacobian may be singular (the Krawczyk operator does
         // not contract): a multiple root, or a point of a solution curve; deeper subdivision
         // would only multiply the boxes
@@ -606,7 +634,8 @@ private:
         for (std::size_t j = 0; j < n; ++j) J.col(j) *= width(x, j);
         Eigen::FullPivLU<Matrix> lu(J);
         Matrix M;
-        if (lu.isInvertible() && lu.rcond() > 1e-12 && (M = lu.inverse()).allFinite()) {
+        const double rcond = lu.isInvertible() ? lu.rcond() : 0;
+        if (rcond > 1e-12 && (M = lu.inverse()).allFinite()) {
           F.resize(n);
           for (std::size_t i = 0; i < n; ++i) embedding[i].apply(x.b[i], F[i], embed_scratch);
           for (std::size_t k = 0; k < n; ++k) {
@@ -614,6 +643,29 @@ private:
             for (std::size_t j = 0; j < n; ++j) {
               tu[j] = (std::max)(tu[j], cu[j]);
               tv[j] = (std::min)(tv[j], cv[j]);
+            }
+          }
+          if (rcond < 0.01) {
+            // J nearly singular (near an ill-conditioned root): every row of its inverse is
+            // dominated by the near-null direction (weight 1 / sigma_min), so the rows are all
+            // nearly one equation and clip little; the inverse with the singular values
+            // floored at a tenth of the largest keeps the other directions apart (5 times
+            // fewer boxes on the Stewart-Gough scene; a gate at 0.1 saves a few more boxes
+            // there but costs more than it saves on the pentagon scene)
+            Eigen::JacobiSVD<Matrix> svd(J, Eigen::ComputeFullU | Eigen::ComputeFullV);
+            const Vector& sv = svd.singularValues();
+            if (sv[Eigen::Index(n) - 1] < 0.01 * sv[0]) {
+              Vector inv(n);
+              for (std::size_t k = 0; k < n; ++k) inv[Eigen::Index(k)] = 1 / (std::max)(sv[Eigen::Index(k)], 0.1 * sv[0]);
+              Matrix R = svd.matrixV() * inv.asDiagonal() * svd.matrixU().transpose();
+              if (R.allFinite())
+                for (std::size_t k = 0; k < n; ++k) {
+                  if (!preconditioned_clip(R, k, cu, cv)) return false;
+                  for (std::size_t j = 0; j < n; ++j) {
+                    tu[j] = (std::max)(tu[j], cu[j]);
+                    tv[j] = (std::min)(tv[j], cv[j]);
+                  }
+                }
             }
           }
         }
@@ -769,7 +821,17 @@ private:
         margin[j] = width_interval(x.lo[j], x.hi[j]) * IT(0.1) + IT(floor);
         c[j] = midpoint_or_point(x.lo[j], x.hi[j]);
       }
-      if (!newton_point(x.lo, x.hi, margin, c) && newton_gate) return false;
+      certify_excluded = false;
+      if (!newton_point(x.lo, x.hi, margin, c) && newton_gate) {
+        // no certification here; without the preconditioned clipping (which excludes such
+        // boxes itself), the Krawczyk operator of the node may miss the node (K(X) holds every
+        // root in X): near an ill-conditioned root the boxes along its near-null direction
+        // keep their sign changes for many levels, and this ends them
+        std::vector<IT> K;
+        bool inside, empty;
+        if (!precondition && krawczyk(x.lo, x.hi, x.b, K, inside, empty) && empty) certify_excluded = true;
+        return false;
+      }
       for (std::size_t j = 0; j < n; ++j) {
         IT a = pt(c[j]) - pt(x.lo[j]), b = pt(x.hi[j]) - pt(c[j]);
         IT r = (O::upper(a) < O::upper(b) ? b : a) * IT(1.1) + margin[j];
@@ -782,7 +844,7 @@ private:
       std::vector<IT> K;
       bool inside, empty;
       if (!krawczyk(lo, hi, b, K, inside, empty)) return false;
-      if (empty) return false;
+      if (empty) { certify_excluded = true; return false; }  // [lo, hi] contains the node
       for (int round = 0; round < 4 && !inside && last_contraction < 0.5; ++round) {
         // epsilon-inflation (Rump): the box was too thin for K to fit; again on the hull of
         // the box and K, widened, in the variables where K sticks out only: in a box the
@@ -796,7 +858,8 @@ private:
           hi[j] = O::upper(pt(h) + w);
         }
         for (std::size_t i = 0; i < n; ++i) b[i] = bernstein(eq[i], lo, hi);
-        if (!krawczyk(lo, hi, b, K, inside, empty) || empty) return false;
+        if (!krawczyk(lo, hi, b, K, inside, empty)) return false;
+        if (empty) { certify_excluded = true; return false; }  // the inflation only grows the box
       }
       if (!inside) return false;
       ++result.statistics.certified_boxes;
@@ -935,14 +998,19 @@ private:
     bool polish(const Node& x)
     {
       std::vector<double> c = center_d(x.lo, x.hi), lo(n), hi(n);
+      const double eps = std::ldexp(1.0, 16 - int(O::bits()));
       for (std::size_t j = 0; j < n; ++j) {
-        double w = width(x, j);
-        lo[j] = O::to_double(x.lo[j]) - 0.1 * w;
-        hi[j] = O::to_double(x.hi[j]) + 0.1 * w;
+        // at least a few thousand units in the last place, as in certify(): a box the clipping
+        // shrank to about a point leaves Newton's rounding no room (and its root was lost)
+        const double l = O::to_double(x.lo[j]), h = O::to_double(x.hi[j]);
+        const double m = (std::max)(0.1 * width(x, j), eps * ((std::max)(std::abs(l), std::abs(h)) + initial_width[j]));
+        lo[j] = l - m;
+        hi[j] = h + m;
       }
       Vector f;
       Matrix J;
       bool converged = false;
+      double last_step = std::numeric_limits<double>::infinity();
       for (int it = 0; it < 30; ++it) {
         evaluate_d(c, f, J);
         Eigen::FullPivLU<Matrix> lu(J);
@@ -955,6 +1023,9 @@ private:
           if (!(c[j] >= lo[j] && c[j] <= hi[j])) return false;
         }
         if (step < 1e-15 || step < 1e-3 * P.tolerance) { converged = true; break; }
+        // stalled at the rounding noise (an ill-conditioned root): as close as double gets
+        if (step < 1e-10 && step >= 0.5 * last_step) { converged = true; break; }
+        last_step = step;
       }
       if (!converged) return false;
       ++result.statistics.certified_boxes;
@@ -976,7 +1047,10 @@ private:
     void make_unknown(Node& x, bool small, bool singular = false)
     {
       // before giving up, one more certification attempt on the box itself
-      if (!singular && !P.fast && certify(x)) return;
+      if (!singular && !P.fast) {
+        if (certify(x)) return;
+        if (certify_excluded) { ++result.statistics.excluded; return; }
+      }
       std::vector<double> c = center_d(x.lo, x.hi);
       Vector f;
       Matrix J;
@@ -999,7 +1073,7 @@ private:
       std::vector<Solver_unresolved<IT>> unknown = cluster(unknown_nodes, Box_class::UNKNOWN);
       for (auto& u : unknown) {
         // a small cluster may be a root the precision could not certify: solve it again
-        if (retry && u.boxes <= 256 && unknown.size() <= 16 && pending_nodes.empty()) {
+        if (retry && u.boxes <= 256 && unknown.size() <= 16 && pending_nodes.empty() && (!same_precision_retry || u.rank_deficient)) {
           ++result.statistics.precision_retries;
           std::vector<Bound> lo = lower_of(u.box), hi = upper_of(u.box);
           for (std::size_t j = 0; j < n; ++j) {

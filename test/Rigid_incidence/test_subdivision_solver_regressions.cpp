@@ -1,0 +1,137 @@
+// Copyright (c) 2026 Rigid_incidence contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Regressions of the subdivision solver, each once a failure of the stress tests:
+//  - two roots 1.4e-8 apart (Mignotte x^6 - 2 (100 x - 1)^2) with Interval_nt coefficients:
+//    no higher precision to retry at, so the cluster must be solved again at the working
+//    precision below the singular width (both certified, exact sign changes at the ends);
+//  - two roots 1.4e-14 apart (x^12 - 2 (100 x - 1)^2) with the Gmpfi solver at 200 bits: the
+//    default minimal width must follow the precision (both certified);
+//  - a planted system in 3 variables whose 9 roots are all ill-conditioned (cond ~ 1e2 .. 1e3),
+//    without domain reduction: the Krawczyk exclusion must end the boxes along the roots'
+//    near-null directions (complete, 9 roots, the same as with domain reduction, few boxes).
+
+#include "test_check.h"
+
+#include <CGAL/Gmpq.h>
+#include <CGAL/Interval_nt.h>
+#include <CGAL/Rigid_incidence/IO/read_polynomial_system.h>
+#include <CGAL/Rigid_incidence/Subdivision_solver.h>
+#ifdef CGAL_USE_MPFI
+#include <CGAL/Gmpfi.h>
+#endif
+
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace RI = CGAL::Rigid_incidence;
+typedef CGAL::Gmpq Q;
+typedef CGAL::Interval_nt<false> I;
+
+// x^d - 2 (a x - 1)^2, coefficients from degree 0 up
+static std::vector<Q> mignotte(int d, long a)
+{
+  std::vector<Q> p(d + 1, Q(0));
+  p[d] = 1;
+  p[2] -= 2 * a * a;
+  p[1] += 4 * a;
+  p[0] -= 2;
+  return p;
+}
+
+static Q value(const std::vector<Q>& p, const Q& x)
+{
+  Q v = 0;
+  for (std::size_t k = p.size(); k-- > 0;) v = v * x + p[k];
+  return v;
+}
+
+template <class NT> static RI::Polynomial_system<NT> univariate(const std::vector<Q>& p, double lo, double hi)
+{
+  RI::Polynomial_system<NT> s;
+  s.variable_names = {"x"};
+  s.box = {{lo, hi}};
+  RI::Sparse_polynomial<NT> f(1);
+  for (std::size_t k = 0; k < p.size(); ++k)
+    if (p[k] != 0) {
+      if constexpr (std::is_same<NT, Q>::value) f.add_term({unsigned(k)}, p[k]);
+      else f.add_term({unsigned(k)}, NT(CGAL::to_interval(p[k])));
+    }
+  s.equations = {f};
+  return s;
+}
+
+// the certified roots of p: disjoint, each with an exact sign change of p at its ends
+template <class IT> static void check_cluster(const std::vector<Q>& p, const RI::Solver_result<IT>& r, std::size_t expected, const std::string& name)
+{
+  CHECK(r.roots.size() == expected, name << ": " << r.roots.size() << " roots, expected " << expected);
+  CHECK(r.complete(), name << ": not complete (" << r.unresolved.size() << " unresolved"
+                           << (r.unresolved.empty() ? std::string() : ", " + r.unresolved[0].reason) << ")");
+  std::vector<std::pair<Q, Q>> e;
+  for (const auto& root : r.roots) {
+    CHECK(root.certified, name << ": a root is not certified");
+    Q lo(CGAL::to_interval(root.enclosure[0]).first), hi(CGAL::to_interval(root.enclosure[0]).second);
+    if constexpr (!std::is_same<IT, I>::value) { lo = Q(root.enclosure[0].inf()); hi = Q(root.enclosure[0].sup()); }
+    CHECK(CGAL::sign(value(p, lo)) * CGAL::sign(value(p, hi)) < 0, name << ": no sign change over an enclosure");
+    for (const auto& f : e) CHECK(hi < f.first || f.second < lo, name << ": enclosures overlap");
+    e.push_back({lo, hi});
+  }
+}
+
+static const char* planted = R"(3
+(11237/2304)*x0^3 + (-3539/1536)*x0^2*x1 + (-4847/3072)*x0^2*x2 + (1358845489/203695360)*x0^2 + (-15223/3072)*x0*x1^2 + (1925/3072)*x0*x1*x2 + (-94197387/203695360)*x0*x1 + (2081/12288)*x0*x2^2 + (-118853763/81478144)*x0*x2 + (-158289503/122217216)*x0 + (15153/2048)*x1^3 + (1119/4096)*x1^2*x2 + (-2157573283/814781440)*x1^2 + (-309/8192)*x1*x2^2 + (93978689/814781440)*x1*x2 + (-8166855293/2036953600)*x1 + (-99/16384)*x2^3 + (258606341/3259125760)*x2^2 + (-1820541107/370355200)*x2 + (-2805740837/664224000);
+(-2657/2304)*x0^3 + (4693/4608)*x0^2*x1 + (3385/9216)*x0^2*x2 + (-1214793271/611086080)*x0^2 + (-18751/9216)*x0*x1^2 + (-1603/9216)*x0*x1*x2 + (336263551/203695360)*x0*x1 + (-1447/36864)*x0*x2^2 + (33914615/81478144)*x0*x2 + (-259520297/122217216)*x0 + (5107/2048)*x1^3 + (541/4096)*x1^2*x2 + (-2630282443/2444344320)*x1^2 + (65/8192)*x1*x2^2 + (-22278263/143784960)*x1*x2 + (-1275328231/2036953600)*x1 + (23/16384)*x2^3 + (-214102819/9777377280)*x2^2 + (-383681169/370355200)*x2 + (-895709279/664224000);
+(-90157/41472)*x0^3 + (9049/9216)*x0^2*x1 + (12973/18432)*x0^2*x2 + (-10758958681/3666516480)*x0^2 + (5149/2048)*x0*x1^2 + (-567/2048)*x0*x1*x2 + (72499201/1222172160)*x0*x1 + (-619/8192)*x0*x2^2 + (314542697/488868864)*x0*x2 + (-1532569891/733303296)*x0 + (-45491/12288)*x1^3 + (-1151/8192)*x1^2*x2 + (2187586563/1629562880)*x1^2 + (277/16384)*x1*x2^2 + (-63965409/1629562880)*x1*x2 + (1061123479/12221721600)*x1 + (265/98304)*x2^3 + (-228593061/6518251520)*x2^2 + (-627406279/2222131200)*x2 + (-1003330363/1328448000);
+
+box * -2 2
+)";
+
+int main()
+{
+  {
+    std::vector<Q> p = mignotte(6, 100);
+    RI::Solver_result<I> r = RI::Subdivision_solver<I>().solve(univariate<I>(p, -1, 1));
+    check_cluster(p, r, 2, "Mignotte d = 6, a = 100, Interval_nt coefficients");
+    RI::Solver_result<I> s = RI::Subdivision_solver<I>().solve(univariate<Q>(p, -1, 1));
+    check_cluster(p, s, 2, "Mignotte d = 6, a = 100, exact coefficients");
+  }
+#ifdef CGAL_USE_MPFI
+  {
+    std::vector<Q> p = mignotte(12, 100);
+    RI::Subdivision_solver_parameters prm;
+    prm.precision = 200;
+    prm.tolerance = 1e-45;
+    RI::Solver_result<CGAL::Gmpfi> r = RI::Subdivision_solver<CGAL::Gmpfi>(prm).solve(univariate<Q>(p, 0, 0.5));
+    check_cluster(p, r, 2, "Mignotte d = 12, a = 100, Gmpfi at 200 bits");
+  }
+#endif
+  {
+    std::istringstream in(planted);
+    RI::Polynomial_system_file f = RI::read_polynomial_system(in);
+    RI::Solver_result<I> ref = RI::Subdivision_solver<I>().solve(f.system);
+    CHECK(ref.complete() && ref.roots.size() == 9, "planted 3 variables: " << ref.roots.size() << " roots with domain reduction");
+    for (int option = 0; option < 2; ++option) {
+      RI::Subdivision_solver_parameters prm;
+      prm.domain_reduction = false;
+      if (option == 1) { prm.preconditioning = false; prm.split = RI::Split_strategy::ROUND_ROBIN; }
+      std::string name = option ? "planted 3 variables, plain bisection" : "planted 3 variables, no domain reduction";
+      RI::Solver_result<I> r = RI::Subdivision_solver<I>(prm).solve(f.system);
+      CHECK(r.complete() && r.roots.size() == 9, name << ": " << r.roots.size() << " roots, " << r.unresolved.size() << " unresolved");
+      // about 4000 boxes (200000, the budget, before the Krawczyk exclusion)
+      CHECK(r.statistics.boxes < 20000, name << ": " << r.statistics.boxes << " boxes");
+      for (const auto& x : r.roots) {
+        std::size_t same = 0;
+        for (const auto& y : ref.roots) {
+          bool overlap = true;
+          for (std::size_t j = 0; j < 3; ++j) overlap = overlap && !(x.enclosure[j].sup() < y.enclosure[j].inf() || y.enclosure[j].sup() < x.enclosure[j].inf());
+          if (overlap) ++same;
+        }
+        CHECK(x.certified && same == 1, name << ": a root not certified, or not one of the 9");
+      }
+    }
+  }
+  std::cout << "test_subdivision_solver_regressions: " << checks << " checks, " << failures << " failures\n";
+  return failures == 0 ? 0 : 1;
+}
