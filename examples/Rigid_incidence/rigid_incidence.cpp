@@ -13,6 +13,7 @@
 
 #include "reduce_command.h"
 #include "solve_command.h"
+#include "family_command.h"
 #include "system_command.h"
 
 #include <chrono>
@@ -36,6 +37,8 @@ static const char* usage_text =
   "  rigid_incidence solve SCENE.json [--json] [--tolerance EPS] [--precision BITS] [--fast]\n"
   "                        [--svg FILE] [--plot A.x,B.z] [--near CONFIG.json] [--max-boxes N]\n"
   "                        [--kernel K]\n"
+  "  rigid_incidence family SCENE.json [--json] [--svg FILE] [--samples K] [--tolerance EPS]\n"
+  "                        [--precision BITS] [--max-boxes N] [--kernel K]\n"
   "  rigid_incidence solve-system FILE [--json] [--tolerance EPS] [--precision BITS] [--fast]\n"
   "                        [--max-boxes N] [--dot FILE] [--no-plan]\n"
   "  rigid_incidence --help\n"
@@ -52,6 +55,22 @@ static const char* usage_text =
   "            variables and equations of the reduced system next to the\n"
   "            6(k-1) of the naive formulation (a free rigid motion for each of the k bodies\n"
   "            of the scene, one of them fixed).\n"
+  "\n"
+  "  family    A scene with a free distance (\"free_distance\": {\"between\": [\"A\", \"B\"],\n"
+  "            \"range\": [smallest, largest]}, or [\"A\", \"B\"] for the range 0 to a bound of\n"
+  "            every distance in the scene) as a family: its configurations traced as curves\n"
+  "            over the length of A-B (the squared length one more variable; certified\n"
+  "            topology), the folds where the number of configurations changes (roots of\n"
+  "            {F = 0, det(dF/dx) = 0}, each length in a certified interval), and the number\n"
+  "            of configurations between folds. --svg FILE: the gallery (configurations at\n"
+  "            --samples K lengths, default 6, grouped by branch) and a plot of each body's\n"
+  "            rotation angle against the length, folds dashed. --json: {scene,\n"
+  "            free_distance {between, range, range_given}, variables, complete, diagnosis,\n"
+  "            folds [{length [lo, hi], certified, change, max_residual, charts,\n"
+  "            found_in_charts, points}], counts [{from, to, count}], branches [{certified,\n"
+  "            closed, ends, max_residual, lengths, points {label: [[x, y, z], ...]}, pieces\n"
+  "            [{charts, parameters}]}], unresolved, stats}. `solve` on such a scene solves it\n"
+  "            without the free distance (curves of configurations).\n"
   "\n"
   "  reduce    The reduced polynomial system of the scene: its variables (the parameters of\n"
   "            the incidence tree's edges: a hinge's t or s, three quaternion components of a\n"
@@ -153,6 +172,7 @@ struct Options
   bool json = false;
   bool no_plan = false;
   solve_command::Solve_options solve;
+  family_command::Family_options family;
 };
 
 template <class Traits>
@@ -161,6 +181,7 @@ int analyze(const Options& o)
   auto t_start = std::chrono::steady_clock::now();
   RI::Scene scene = RI::read_scene(o.scene);
   RI::Rigid_body_collection<Traits> input = RI::make_collection<Traits>(scene);
+  if (o.command == "family") return family_command::family(scene, input, o.family, o.scene);
   std::vector<std::string> log;
   RI::Rigid_body_collection<Traits> c;
   try {
@@ -178,6 +199,9 @@ int analyze(const Options& o)
   RI::Incidence_tree t = RI::optimal_incidence_tree(c);
   RI::Overlap_graph og(c);
   RI::Well_formed_selection wf = RI::select_well_formed_incidences(c, t);
+  if (o.command == "solve" && scene.free_distance.declared)
+    std::cerr << "rigid_incidence: note: " << o.scene << ": the distance " << scene.free_distance.a << "-" << scene.free_distance.b
+              << " is declared free: solved without it (rigid_incidence family solves the family over its range)\n";
   if (o.command == "solve")
     return solve_command::solve(scene, input, c, t, wf, dof, o.solve, o.json, o.scene,
                                 std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count());
@@ -484,7 +508,7 @@ int main(int argc, char** argv)
   std::vector<std::string> args(argv + 1, argv + argc);
   if (args.empty()) { std::cerr << usage_text; return 1; }
   if (args[0] == "--help" || args[0] == "-h" || args[0] == "help") { std::cout << usage_text; return 0; }
-  if (args[0] != "analyze" && args[0] != "reduce" && args[0] != "solve" && args[0] != "solve-system") { std::cerr << "rigid_incidence: unknown command '" << args[0] << "' (see --help)\n"; return 1; }
+  if (args[0] != "analyze" && args[0] != "reduce" && args[0] != "solve" && args[0] != "solve-system" && args[0] != "family") { std::cerr << "rigid_incidence: unknown command '" << args[0] << "' (see --help)\n"; return 1; }
   Options o;
   o.command = args[0];
   for (std::size_t i = 1; i < args.size(); ++i) {
@@ -496,11 +520,25 @@ int main(int argc, char** argv)
     } else if (a == "--fast") {
       if (o.command != "solve" && o.command != "solve-system") { std::cerr << "rigid_incidence: --fast is an option of solve\n"; return 1; }
       o.solve.fast = true;
+    } else if (a == "--samples") {
+      if (i + 1 >= args.size()) { std::cerr << "rigid_incidence: " << a << " needs a value\n"; return 1; }
+      if (o.command != "family") { std::cerr << "rigid_incidence: --samples is an option of family\n"; return 1; }
+      const std::string& v = args[++i];
+      try {
+        double k = solve_command::parse_positive(a, v);
+        if (k != std::floor(k) || k > 100) throw RI::Input_error(a + ": '" + v + "' is not a whole number of lengths (1 .. 100)");
+        o.family.samples = std::size_t(k);
+      } catch (const RI::Input_error& e) {
+        std::cerr << "rigid_incidence: " << e.what() << "\n";
+        return 1;
+      }
     } else if (a == "--tolerance" || a == "--precision" || a == "--svg" || a == "--near" || a == "--max-boxes" || a == "--plot") {
       if (i + 1 >= args.size()) { std::cerr << "rigid_incidence: " << a << " needs a value\n"; return 1; }
       const bool system_option = a != "--svg" && a != "--near" && a != "--plot";
-      if (o.command != "solve" && !(system_option && o.command == "solve-system")) {
-        std::cerr << "rigid_incidence: " << a << " is an option of solve" << (system_option ? " and solve-system" : "") << "\n";
+      const bool family_option = a != "--near" && a != "--plot";
+      if (o.command != "solve" && !(system_option && o.command == "solve-system") && !(family_option && o.command == "family")) {
+        std::cerr << "rigid_incidence: " << a << " is an option of solve" << (system_option ? ", solve-system" : "")
+                  << (family_option ? " and family" : "") << "\n";
         return 1;
       }
       const std::string& v = args[++i];
@@ -540,6 +578,8 @@ int main(int argc, char** argv)
     else { std::cerr << "rigid_incidence: more than one scene given ('" << a << "')\n"; return 1; }
   }
   if (o.scene.empty()) { std::cerr << "rigid_incidence: " << o.command << " needs a " << (o.command == "solve-system" ? "system" : "scene") << " file\n"; return 1; }
+  o.family.solve = o.solve;
+  o.family.json = o.json;
   try {
     if (o.command == "solve-system") {
       system_command::System_options so;

@@ -28,6 +28,7 @@
 #include <CGAL/Rigid_incidence/Reduced_system.h>
 #include <CGAL/Rigid_incidence/Configuration.h>
 #include <CGAL/Rigid_incidence/solve_scene.h>
+#include <CGAL/Rigid_incidence/solve_family.h>
 #include <CGAL/Rigid_incidence/naive_systems.h>
 #include <CGAL/Rigid_incidence/IO/read_scene.h>
 #include <CGAL/Rigid_incidence/IO/write_dot.h>

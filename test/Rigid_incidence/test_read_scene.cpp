@@ -186,7 +186,19 @@ static std::vector<Bad_case> malformed_cases()
   add("format_not_string", "{\"format\": 1, \"bodies\": [" + BODY_C1 + "]}", {"format"});
   add("format_duplicate", "{" + FMT + ", " + FMT + ", \"bodies\": [" + BODY_C1 + "]}", {"format", "duplicate"});
   add("unknown_top_field", two_bodies("\"bodys\": []"), {"bodys"});
-  add("unsupported_free_distance", two_bodies("\"free_distance\": [\"B\", \"C\"]"), {"free_distance"});
+  add("free_distance_unknown_point", two_bodies("\"free_distance\": [\"B\", \"Q\"]"), {"free_distance", "'Q'"});
+  add("free_distance_same_point", two_bodies("\"free_distance\": [\"B\", \"B\"]"), {"free_distance", "two different points"});
+  add("free_distance_three_points", two_bodies("\"free_distance\": [\"A\", \"B\", \"C\"]"), {"free_distance", "2 point labels"});
+  add("free_distance_number", two_bodies("\"free_distance\": 3"), {"free_distance", "expected"});
+  add("free_distance_bad_range", two_bodies("\"free_distance\": {\"between\": [\"B\", \"D\"], \"range\": [5, 2]}"),
+      {"free_distance", "range", "below"});
+  add("free_distance_negative_range", two_bodies("\"free_distance\": {\"between\": [\"B\", \"D\"], \"range\": [-1, 2]}"),
+      {"free_distance", "negative"});
+  add("free_distance_range_not_number", two_bodies("\"free_distance\": {\"between\": [\"B\", \"D\"], \"range\": [\"x\", 2]}"),
+      {"free_distance", "range[0]"});
+  add("free_distance_unknown_field", two_bodies("\"free_distance\": {\"between\": [\"B\", \"D\"], \"step\": 1}"),
+      {"free_distance", "step"});
+  add("free_distance_no_between", two_bodies("\"free_distance\": {\"range\": [1, 2]}"), {"free_distance", "between"});
   add("inequality_three_points", two_bodies("\"inequalities\": [{\"orientation\": [\"A\", \"B\", \"C\"]}]"), {"inequalities[0]", "4 point labels"});
   add("unknown_body_field",
       scene(BODY_C1 + R"(, {"name": "c2", "colour": "red", "points": {"A": ["0","0","0"], "D": ["0","0","1"]}})"),

@@ -266,6 +266,45 @@ struct Polynomial_system
   std::size_t number_of_inequalities() const { return inequalities.size(); }
 };
 
+/*!
+\ingroup PkgRigidIncidenceRef
+\brief The determinant of a square matrix of polynomials (all in the same variables), by Laplace
+expansion with the minors of the lower rows shared: about n 2^(n-1) polynomial products.
+*/
+template <class NT>
+Sparse_polynomial<NT> determinant(const std::vector<std::vector<Sparse_polynomial<NT>>>& m)
+{
+  const std::size_t n = m.size();
+  if (n == 0) throw Input_error("determinant: empty matrix");
+  if (n > 20) throw Input_error("determinant: " + std::to_string(n) + " rows is too many for the expansion");
+  const std::size_t vars = m[0][0].number_of_variables();
+  for (const auto& row : m)
+    if (row.size() != n) throw Input_error("determinant: the matrix is not square");
+  // minor[S]: the determinant of the last |S| rows and the columns in S (a bit mask)
+  std::map<unsigned long, Sparse_polynomial<NT>> minor, next;
+  for (std::size_t j = 0; j < n; ++j) minor[1ul << j] = m[n - 1][j];
+  for (std::size_t i = n - 1; i-- > 0;) {
+    next.clear();
+    for (const auto& sub : minor)
+      for (std::size_t j = 0; j < n; ++j) {
+        if (sub.first & (1ul << j)) continue;
+        if (m[i][j].is_zero() || sub.second.is_zero()) {
+          next.emplace(sub.first | (1ul << j), Sparse_polynomial<NT>(vars));
+          continue;
+        }
+        // the sign of column j among the columns of S + j: (-1)^(columns of S before j)
+        std::size_t before = 0;
+        for (std::size_t k = 0; k < j; ++k) before += (sub.first >> k) & 1ul;
+        Sparse_polynomial<NT> t = m[i][j] * sub.second;
+        auto it = next.find(sub.first | (1ul << j));
+        if (it == next.end()) it = next.emplace(sub.first | (1ul << j), Sparse_polynomial<NT>(vars)).first;
+        it->second = before % 2 ? it->second - t : it->second + t;
+      }
+    minor.swap(next);
+  }
+  return minor.begin()->second;
+}
+
 } // namespace Rigid_incidence
 } // namespace CGAL
 

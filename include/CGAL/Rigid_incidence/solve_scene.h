@@ -271,10 +271,35 @@ struct Scene_piece
   Scene_curve_piece piece;
   std::vector<Configuration> configurations;
   Curve_end ends[2];
+  // an end on the border of a range that is not a chart's (a family's free distance): not
+  // joined to another piece, and kept as `BOUNDARY`
+  bool range_end[2] = {false, false};
   bool certified = true, closed = false, on_inequality_boundary = false;
   double max_residual = 0;
   std::string note;
 };
+
+// The configurations along a traced polyline (each point's first coordinates are the reduced
+// system's parameters; a family appends one more), each checked in the original system: a
+// failed check makes the piece not certified. False if a body must be mirrored somewhere
+// (then the piece is not a branch of the scene).
+template <class Traits, class NT>
+bool add_configurations(Scene_piece& q, const std::vector<std::vector<double>>& points, const Reduced_system<Traits, NT>& r,
+                        const Rigid_body_collection<Traits>& original, double threshold)
+{
+  bool spurious = false;
+  const std::size_t n = r.number_of_variables();
+  for (const auto& p : points) {
+    q.configurations.push_back(configuration(r, std::vector<double>(p.begin(), p.begin() + long(n))));
+    Residual_report rep = residuals(original, q.configurations.back());
+    if (!verified(rep, threshold, configuration_size(q.configurations.back()))) {
+      if (rep.mirrored && rep.complete) spurious = true;
+      else q.certified = false;
+    }
+    q.max_residual = (std::max)(q.max_residual, rep.max());
+  }
+  return !spurious;
+}
 
 // Joins the pieces of all chart combinations into branches: a piece ending on its chart's
 // border continues in the piece of another chart that ends in the same configuration (within
@@ -289,12 +314,14 @@ inline std::vector<Scene_curve> join_pieces(std::vector<Scene_piece>& pieces, do
     return e % 2 ? c.back() : c.front();
   };
   for (std::size_t e = 0; e < 2 * N; ++e) {
-    if (pieces[e / 2].closed || pieces[e / 2].ends[e % 2] != Curve_end::BOUNDARY || partner[e] >= 0) continue;
+    if (pieces[e / 2].closed || pieces[e / 2].ends[e % 2] != Curve_end::BOUNDARY || pieces[e / 2].range_end[e % 2] || partner[e] >= 0) continue;
     const double size = configuration_size(end_conf(e));
     double best = tolerance * size;
     long at = -1;
     for (std::size_t f = 0; f < 2 * N; ++f) {
-      if (f == e || pieces[f / 2].closed || pieces[f / 2].ends[f % 2] != Curve_end::BOUNDARY || partner[f] >= 0) continue;
+      if (f == e || pieces[f / 2].closed || pieces[f / 2].ends[f % 2] != Curve_end::BOUNDARY || pieces[f / 2].range_end[f % 2] ||
+          partner[f] >= 0)
+        continue;
       if (pieces[f / 2].piece.charts == pieces[e / 2].piece.charts && pieces[f / 2].piece.placements == pieces[e / 2].piece.placements) continue;
       const double d = configuration_distance(end_conf(e), end_conf(f));
       if (d <= best) { best = d; at = long(f); }
@@ -308,6 +335,7 @@ inline std::vector<Scene_curve> join_pieces(std::vector<Scene_piece>& pieces, do
     std::size_t p = start_piece;
     int side = start_side;  // the end we enter the piece by
     c.ends[0] = pieces[p].ends[side];
+    const bool start_in_range = !pieces[p].range_end[side];
     while (true) {
       used[p] = 1;
       Scene_piece& q = pieces[p];
@@ -328,7 +356,7 @@ inline std::vector<Scene_curve> join_pieces(std::vector<Scene_piece>& pieces, do
       if (next < 0) {
         c.ends[1] = q.ends[1 - side];
         // an end on a chart border without a partner in another chart: not accounted for
-        if (c.ends[1] == Curve_end::BOUNDARY) { c.ends[1] = Curve_end::UNRESOLVED; c.certified = false; }
+        if (c.ends[1] == Curve_end::BOUNDARY && !q.range_end[1 - side]) { c.ends[1] = Curve_end::UNRESOLVED; c.certified = false; }
         break;
       }
       if (used[std::size_t(next) / 2]) {
@@ -340,7 +368,7 @@ inline std::vector<Scene_curve> join_pieces(std::vector<Scene_piece>& pieces, do
       p = std::size_t(next) / 2;
       side = int(std::size_t(next) % 2);
     }
-    if (c.ends[0] == Curve_end::BOUNDARY) { c.ends[0] = Curve_end::UNRESOLVED; c.certified = false; }
+    if (c.ends[0] == Curve_end::BOUNDARY && start_in_range) { c.ends[0] = Curve_end::UNRESOLVED; c.certified = false; }
     out.push_back(std::move(c));
   };
   for (std::size_t p = 0; p < N; ++p)
@@ -526,17 +554,7 @@ Scene_solve_result solve_scene(const Rigid_body_collection<Traits>& original, co
                      (std::size_t(left_out) < sys.labels.size() ? sys.labels[std::size_t(left_out)] : std::string()) +
                      "), which vanishes at every point of the branch: checked numerically, not proved";
           }
-          bool spurious = false;
-          for (const auto& x : c.points) {
-            q.configurations.push_back(configuration(r, x));
-            Residual_report rep = residuals(original, q.configurations.back());
-            if (!internal::verified(rep, parameters.residual_threshold, internal::configuration_size(q.configurations.back()))) {
-              if (rep.mirrored && rep.complete) spurious = true;
-              else q.certified = false;
-            }
-            q.max_residual = (std::max)(q.max_residual, rep.max());
-          }
-          if (spurious) { ++st.spurious; continue; }
+          if (!internal::add_configurations(q, c.points, r, original, parameters.residual_threshold)) { ++st.spurious; continue; }
           pieces.push_back(std::move(q));
         }
       }

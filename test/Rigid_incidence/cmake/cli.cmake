@@ -45,7 +45,7 @@ if(TARGET rigid_incidence)
   format_not_string "format"
   format_duplicate "format&&duplicate"
   unknown_top_field "bodys"
-  unsupported_free_distance "free_distance"
+  free_distance_unknown_point "free_distance&&'Q' is in no body"
   inequality_three_points "inequalities.0.&&4 point labels"
   unknown_body_field "colour&&('c2'|bodies.1.)"
   unknown_distance_field "weight&&distances.0."
@@ -343,6 +343,36 @@ if(TARGET rigid_incidence)
   add_test(NAME cli_solve_bad_plot
            COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${_ri_d}/quad_one_dof.json|--svg|${CMAKE_CURRENT_BINARY_DIR}/cli_bad_plot.svg|--plot|Q9.x,E1.z" -DEXPECT_RC=2
                    "-DEXPECT_STDERR=--plot: no placed point 'Q9'" -P ${_ri_cli_script})
+  # a family: the quad with its apex distance E1-E2 free (issue 7)
+  add_test(NAME cli_family_quad
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=family|${_ri_d}/quad_family.json|--svg|${CMAKE_CURRENT_BINARY_DIR}/cli_quad_family.svg|--samples|4" -DEXPECT_RC=0
+                   "-DEXPECT_STDOUT=free distance E1-E2 over .1, 8.&&2 branch\\(es\\), 16 fold\\(s\\), all certified: complete&&E1-E2 in .3.99774[0-9]*, 3.99774[0-9]*.: .4 \\(2 folds at this length\\)&&\\(3.99774[0-9]*, 4.36074[0-9]*\\): 16
+&&\\(6.25352[0-9]*, 8\\): 0
+&&branch 2 \\(certified\\): [0-9]+ frames in [0-9]+ chart piece\\(s\\), closed"
+                   "-DCHECK_FILE=${CMAKE_CURRENT_BINARY_DIR}/cli_quad_family.svg"
+                   "-DCHECK_FILE_REGEX=^<svg&&2 branch\\(es\\), 16 fold\\(s\\), complete&&branch 2 \\(certified\\), closed&&E1-E2 = 3.6: 4<&&c1: rotation angle&&<path d=\" M&&</svg>" -P ${_ri_cli_script})
+  add_test(NAME cli_family_json
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=family|${_ri_d}/quad_family.json|--json" -DEXPECT_RC=0
+                   "-DEXPECT_STDOUT=\"complete\": true&&\"folds\": &&\"change\": -4&&\"counts\": &&\"count\": 16&&\"branches\": &&\"lengths\": &&\"fold_boxes\": [1-9]"
+                   -P ${_ri_cli_script})
+  add_test(NAME cli_family_default_range
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=family|${CMAKE_CURRENT_LIST_DIR}/../data/quad_family_no_range.json" -DEXPECT_RC=0
+                   "-DEXPECT_STDOUT=over .0, 30. \\(no range given&&2 branch\\(es\\), 16 fold\\(s\\), all certified: complete&&\\(6.25352[0-9]*, 30\\): 0
+"
+                   -P ${_ri_cli_script})
+  add_test(NAME cli_family_no_free_distance
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=family|${_ri_d}/quad_distinct.json" -DEXPECT_RC=2
+                   "-DEXPECT_STDERR=declares no free distance" -P ${_ri_cli_script})
+  add_test(NAME cli_family_bad_samples
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=family|${_ri_d}/quad_family.json|--samples|0" -DEXPECT_RC=1
+                   "-DEXPECT_STDERR=--samples: '0' is not a positive number" -P ${_ri_cli_script})
+  add_test(NAME cli_family_option_of_solve
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=family|${_ri_d}/quad_family.json|--plot|E1.x,E1.y" -DEXPECT_RC=1
+                   "-DEXPECT_STDERR=--plot is an option of solve" -P ${_ri_cli_script})
+  add_test(NAME cli_solve_free_distance
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${_ri_d}/quad_family.json" -DEXPECT_RC=0
+                   "-DEXPECT_STDERR=E1-E2 is declared free: solved without it"
+                   "-DEXPECT_STDOUT=0 configuration\\(s\\) and 2 curve branch\\(es\\), all certified: complete" -P ${_ri_cli_script})
   add_test(NAME cli_solve_under_constrained
            COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${_ri_d}/bar_end.json|--json" -DEXPECT_RC=0
                    "-DEXPECT_STDOUT=\"complete\": false&&\"diagnosis\": \"under_constrained: " -P ${_ri_cli_script})

@@ -53,12 +53,28 @@ struct Scene
     std::vector<std::string> points;  ///< the labels A, B, C, D
     bool negative = false;            ///< the file gave "sign": "negative"
   };
+  /// A distance declared free ("free_distance"): the scene moves with it, and
+  /// `solve_family()` solves it as curves over the distance's range.
+  struct Free_distance
+  {
+    bool declared = false;     ///< the file declares a free distance
+    std::string a;             ///< the first point label
+    std::string b;             ///< the second point label
+    bool has_range = false;    ///< the file gave "range" (else a bound from the scene is used)
+    CGAL::Gmpq lo;             ///< the smallest length of the range
+    CGAL::Gmpq hi;             ///< the largest length of the range
+    bool had_length = false;   ///< the pair is also in "distances" (that length is not imposed)
+    CGAL::Gmpq nominal_squared;///< the squared length given there
+  };
   std::string source;          ///< file name (or "<stream>") used in error messages
   std::string name;            ///< the scene's name (may be empty)
   std::vector<Body> bodies;    ///< the bodies, in the order of the file
   std::vector<Distance> distances; ///< the distances, in the order of the file
   std::vector<Inequality> inequalities; ///< the inequality constraints, in the order of the file
   std::string frame;           ///< empty: the first body
+  /// The free distance, if declared. It is not in `distances`: a scene with a free distance
+  /// is solved without it (a curve of configurations), or as a family by `solve_family()`.
+  Free_distance free_distance;
 };
 
 } // namespace Rigid_incidence

@@ -166,14 +166,10 @@ public:
     Scene scene;
     scene.source = source_;
     expect(root, Json_node::OBJECT, "top level");
-    static const std::set<std::string> known = {"format", "name", "bodies", "distances", "inequalities", "frame", "comment"};
-    static const std::set<std::string> later = {"free_distance"};
-    for (const auto& m : root.members) {
-      if (later.count(m.first))
-        fail("field \"" + m.first + "\"", "not supported by this version of the package (it would be ignored)");
+    static const std::set<std::string> known = {"format", "name", "bodies", "distances", "inequalities", "frame", "comment", "free_distance"};
+    for (const auto& m : root.members)
       if (!known.count(m.first))
-        fail("field \"" + m.first + "\"", "unknown field (known: format, name, bodies, distances, inequalities, frame, comment)");
-    }
+        fail("field \"" + m.first + "\"", "unknown field (known: format, name, bodies, distances, inequalities, frame, comment, free_distance)");
     const Json_node* format = member(root, "format", "top level");
     if (!format) fail("", "missing field \"format\" (expected \"rigid-incidence-scene/1\")");
     std::string f = string_field(*format, "field \"format\"");
@@ -281,6 +277,7 @@ public:
         scene.inequalities.push_back(ineq);
       }
     }
+    if (const Json_node* fd = member(root, "free_distance", "top level")) free_distance(*fd, scene);
     if (const Json_node* fr = member(root, "frame", "top level")) {
       scene.frame = string_field(*fr, "field \"frame\"");
       if (!body_names.count(scene.frame)) fail("field \"frame\"", "names no body: '" + scene.frame + "'");
@@ -289,6 +286,58 @@ public:
   }
 
 private:
+  // "free_distance": ["A", "B"] or {"between": ["A", "B"], "range": [lo, hi]} (lengths). A pair
+  // also listed in "distances" is taken out of them: its length is no longer imposed.
+  void free_distance(const Json_node& fd, Scene& scene) const
+  {
+    const std::string where = "field \"free_distance\"";
+    Scene::Free_distance f;
+    f.declared = true;
+    const Json_node* between = &fd;
+    if (fd.kind == Json_node::OBJECT) {
+      for (const auto& m : fd.members)
+        if (m.first != "between" && m.first != "range") fail(where, "unknown field \"" + m.first + "\" (known: between, range)");
+      between = member(fd, "between", where);
+      if (!between) fail(where, "missing field \"between\" (two point labels)");
+      if (const Json_node* range = member(fd, "range", where)) {
+        expect(*range, Json_node::ARRAY, where + ".range");
+        if (range->elements.size() != 2) fail(where + ".range", "expected [smallest, largest] length");
+        f.lo = number(range->elements[0], where + ".range[0]");
+        f.hi = number(range->elements[1], where + ".range[1]");
+        if (f.lo < 0) fail(where + ".range", "a length cannot be negative");
+        if (!(f.lo < f.hi)) fail(where + ".range", "the smallest length must be below the largest");
+        f.has_range = true;
+      }
+    } else if (fd.kind != Json_node::ARRAY) {
+      fail(where, std::string("expected [\"A\", \"B\"] or {\"between\": [\"A\", \"B\"], \"range\": [lo, hi]}, found ") +
+                      Json_node::kind_name(fd.kind));
+    }
+    expect(*between, Json_node::ARRAY, where + ".between");
+    if (between->elements.size() != 2) fail(where, "expected 2 point labels");
+    f.a = string_field(between->elements[0], where + "[0]");
+    f.b = string_field(between->elements[1], where + "[1]");
+    if (f.a == f.b) fail(where, "a distance must join two different points");
+    bool a_known = false, b_known = false;
+    for (const auto& body : scene.bodies)
+      for (const auto& p : body.points) {
+        a_known = a_known || p.label == f.a;
+        b_known = b_known || p.label == f.b;
+      }
+    if (!a_known) fail(where, "point '" + f.a + "' is in no body");
+    if (!b_known) fail(where, "point '" + f.b + "' is in no body");
+    for (std::size_t i = 0; i < scene.distances.size();) {
+      const auto& d = scene.distances[i];
+      if ((d.a == f.a && d.b == f.b) || (d.a == f.b && d.b == f.a)) {
+        f.had_length = true;
+        f.nominal_squared = d.squared;
+        scene.distances.erase(scene.distances.begin() + long(i));
+      } else {
+        ++i;
+      }
+    }
+    scene.free_distance = f;
+  }
+
   std::string source_;
 };
 
