@@ -243,14 +243,7 @@ private:
         if (!P.fast && P.maximal_precision > 0 && (std::max)(P.maximal_precision, 2 * P.precision) >= bits) {
           // solve a region again with CGAL::Gmpfi at twice the precision
           retry = [&sys, this, bits](const std::vector<Bound>& lo, const std::vector<Bound>& hi, Solver_result<IT>& out) {
-            Polynomial_system<NT> sub = sys;
-            for (std::size_t j = 0; j < n; ++j) {
-              // the double box must contain the region: round outward
-              sub.box[j] = {std::nextafter(O::to_double(lo[j]), -std::numeric_limits<double>::infinity()),
-                            std::nextafter(O::to_double(hi[j]), std::numeric_limits<double>::infinity())};
-              sub.box[j].first = (std::max)(sub.box[j].first, O::to_double(dlo[j]));
-              sub.box[j].second = (std::min)(sub.box[j].second, O::to_double(dhi[j]));
-            }
+            const Polynomial_system<NT> sub = region_system(sys, lo, hi);
             Subdivision_solver_parameters q = P;
             q.precision = bits;
             if (P.maximal_precision < 2 * bits) q.maximal_precision = 0;  // one doubling only, unless asked for more
@@ -289,13 +282,7 @@ private:
         // singular width, so solve it again at this precision down to the minimal width
         same_precision_retry = true;
         retry = [&sys, this](const std::vector<Bound>& lo, const std::vector<Bound>& hi, Solver_result<IT>& out) {
-          Polynomial_system<NT> sub = sys;
-          for (std::size_t j = 0; j < n; ++j) {
-            sub.box[j] = {std::nextafter(O::to_double(lo[j]), -std::numeric_limits<double>::infinity()),
-                          std::nextafter(O::to_double(hi[j]), std::numeric_limits<double>::infinity())};
-            sub.box[j].first = (std::max)(sub.box[j].first, O::to_double(dlo[j]));
-            sub.box[j].second = (std::min)(sub.box[j].second, O::to_double(dhi[j]));
-          }
+          const Polynomial_system<NT> sub = region_system(sys, lo, hi);
           Subdivision_solver_parameters q = P;
           q.maximal_precision = 0;
           q.minimal_width = min_width;
@@ -304,6 +291,21 @@ private:
           out = Subdivision_solver<IT>(q).solve(sub);
         };
       }
+    }
+
+    // The system on a region of the search box (for a retry): its double box contains the
+    // region (rounded outward) and stays inside the search box.
+    template <class NT>
+    Polynomial_system<NT> region_system(const Polynomial_system<NT>& sys, const std::vector<Bound>& lo, const std::vector<Bound>& hi) const
+    {
+      Polynomial_system<NT> sub = sys;
+      for (std::size_t j = 0; j < n; ++j) {
+        sub.box[j] = {std::nextafter(O::to_double(lo[j]), -std::numeric_limits<double>::infinity()),
+                      std::nextafter(O::to_double(hi[j]), std::numeric_limits<double>::infinity())};
+        sub.box[j].first = (std::max)(sub.box[j].first, O::to_double(dlo[j]));
+        sub.box[j].second = (std::min)(sub.box[j].second, O::to_double(dhi[j]));
+      }
+      return sub;
     }
 
     template <class NT> Equation make_equation(const Sparse_polynomial<NT>& f)
