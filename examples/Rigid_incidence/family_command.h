@@ -131,7 +131,21 @@ inline void write_family_svg(const std::string& file, const RI::Scene& scene, co
       y += cell;
     }
   }
-  // reference axes: per body, the axis where its rotation is largest (signs the angle)
+  // each body's rotation relative to its pose in the first frame of the first branch (for a
+  // body hinged on the frame: its hinge rotation since then), signed about the axis where it
+  // is largest
+  std::vector<std::array<double, 9>> start(scene.bodies.size(), {{1, 0, 0, 0, 1, 0, 0, 0, 1}});
+  if (!r.branches.empty()) {
+    auto poses = solve_command::user_poses(scene, r.branches.front().curve.configurations.front());
+    for (std::size_t k = 0; k < poses.size(); ++k)
+      if (poses[k].second.ok) start[k] = poses[k].second.motion.R;
+  }
+  auto relative = [&](std::size_t k, const std::array<double, 9>& R) {  // R start^T
+    std::array<double, 9> M;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) M[3 * i + j] = R[3 * i] * start[k][3 * j] + R[3 * i + 1] * start[k][3 * j + 1] + R[3 * i + 2] * start[k][3 * j + 2];
+    return M;
+  };
   std::vector<std::array<double, 3>> ref(scene.bodies.size(), {0, 0, 0});
   std::vector<double> best(scene.bodies.size(), 0);
   for (const auto& br : r.branches)
@@ -140,7 +154,7 @@ inline void write_family_svg(const std::string& file, const RI::Scene& scene, co
       for (std::size_t k = 0; k < poses.size(); ++k) {
         if (!poses[k].second.ok) continue;
         std::array<double, 3> ax;
-        const double t = rotation_angle(poses[k].second.motion.R, ax);
+        const double t = rotation_angle(relative(k, poses[k].second.motion.R), ax);
         const double s = std::sin(t * CGAL_PI / 180);
         if (s > best[k]) { best[k] = s; ref[k] = ax; }
       }
@@ -150,7 +164,7 @@ inline void write_family_svg(const std::string& file, const RI::Scene& scene, co
     auto X = [&](double d) { return px + (d - lo) / (hi - lo) * pw; };
     auto Y = [&](double a) { return py + ph / 2 - a / 180 * (ph / 2); };
     out << "<rect x=\"" << px << "\" y=\"" << py << "\" width=\"" << pw << "\" height=\"" << ph << "\" fill=\"none\" stroke=\"#999\"/>\n"
-        << "<text x=\"" << px << "\" y=\"" << py - 6 << "\">" << scene.bodies[k].name << ": rotation angle (degrees, -180 .. 180) against "
+        << "<text x=\"" << px << "\" y=\"" << py - 6 << "\">" << scene.bodies[k].name << ": rotation since the first frame (deg) vs "
         << r.a << "-" << r.b << "</text>\n"
         << "<line x1=\"" << px << "\" y1=\"" << Y(0) << "\" x2=\"" << px + pw << "\" y2=\"" << Y(0) << "\" stroke=\"#ddd\"/>\n"
         << "<text x=\"" << px << "\" y=\"" << py + ph + 12 << "\">" << solve_command::short_number(lo) << "</text>\n"
@@ -165,7 +179,7 @@ inline void write_family_svg(const std::string& file, const RI::Scene& scene, co
         auto poses = solve_command::user_poses(scene, br.curve.configurations[i]);
         if (k >= poses.size() || !poses[k].second.ok) continue;
         std::array<double, 3> ax;
-        double a = rotation_angle(poses[k].second.motion.R, ax);
+        double a = rotation_angle(relative(k, poses[k].second.motion.R), ax);
         if (ax[0] * ref[k][0] + ax[1] * ref[k][1] + ax[2] * ref[k][2] < 0) a = -a;
         pts.push_back({br.lengths[i], a});
       }

@@ -64,7 +64,7 @@ static const char* usage_text =
   "            {F = 0, det(dF/dx) = 0}, each length in a certified interval), and the number\n"
   "            of configurations between folds. --svg FILE: the gallery (configurations at\n"
   "            --samples K lengths, default 6, grouped by branch) and a plot of each body's\n"
-  "            rotation angle against the length, folds dashed. --json: {scene,\n"
+  "            rotation since the first frame against the length, folds dashed. --json: {scene,\n"
   "            free_distance {between, range, range_given}, variables, complete, diagnosis,\n"
   "            folds [{length [lo, hi], certified, change, max_residual, charts,\n"
   "            found_in_charts, points}], counts [{from, to, count}], branches [{certified,\n"

@@ -350,7 +350,7 @@ if(TARGET rigid_incidence)
 &&\\(6.25352[0-9]*, 8\\): 0
 &&branch 2 \\(certified\\): [0-9]+ frames in [0-9]+ chart piece\\(s\\), closed"
                    "-DCHECK_FILE=${CMAKE_CURRENT_BINARY_DIR}/cli_quad_family.svg"
-                   "-DCHECK_FILE_REGEX=^<svg&&2 branch\\(es\\), 16 fold\\(s\\), complete&&branch 2 \\(certified\\), closed&&E1-E2 = 3.6: 4<&&c1: rotation angle&&<path d=\" M&&</svg>" -P ${_ri_cli_script})
+                   "-DCHECK_FILE_REGEX=^<svg&&2 branch\\(es\\), 16 fold\\(s\\), complete&&branch 2 \\(certified\\), closed&&E1-E2 = 3.6: 4<&&c1: rotation since the first frame&&<path d=\" M&&</svg>" -P ${_ri_cli_script})
   add_test(NAME cli_family_json
            COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=family|${_ri_d}/quad_family.json|--json" -DEXPECT_RC=0
                    "-DEXPECT_STDOUT=\"complete\": true&&\"folds\": &&\"change\": -4&&\"counts\": &&\"count\": 16&&\"branches\": &&\"lengths\": &&\"fold_boxes\": [1-9]"
