@@ -69,7 +69,7 @@ int run(const RI::Polynomial_system_file& file, const RI::Solution_plan& plan, c
   std::string diagnosis;
   RI::Plan_result<IT> r;
   RI::Curve_result<IT> curves;
-  bool traced = false;
+  bool traced = false, along_plan = false;
   if (o.no_plan) {
     // the undecomposed solver, in the same result shape
     auto s = RI::Subdivision_solver<IT>(p).solve(sys);
@@ -91,13 +91,28 @@ int run(const RI::Polynomial_system_file& file, const RI::Solution_plan& plan, c
     r = RI::solve_with_plan<IT>(sys, plan, p);
   } else if (plan.structure() == RI::Solution_plan::ONE_DEGREE_OF_FREEDOM && sys.number_of_equations() + 1 == sys.number_of_variables() &&
              !o.solve.fast) {
-    // one equation fewer than variables: the solution set is a curve, traced whole
+    // one equation fewer than variables: the solution set is a curve
     RI::Curve_tracer_parameters cp;
     cp.precision = o.solve.precision;
     cp.tolerance = (std::max)(o.solve.tolerance, 1e-10);
     if (o.solve.max_boxes > 0) cp.maximal_boxes = o.solve.max_boxes;
-    curves = RI::trace_curves<IT>(sys, cp);
+    // the whole system at once; when the plan's curve block comes first and square blocks
+    // follow (Jansen's linkage: the crank, then one point at a time), with at most 20000
+    // boxes, and along the plan if that runs out (the whole-system tracer resolves what the
+    // lifting cannot, folds of a later block, but not 12 variables)
+    const auto& blocks = plan.blocks();
+    const bool plan_form = blocks.size() > 1 && blocks[0].dimension() == 1 && blocks[0].inputs.empty() &&
+                           std::all_of(blocks.begin() + 1, blocks.end(), [](const RI::Plan_block& b) { return b.dimension() == 0; });
+    RI::Curve_tracer_parameters first = cp;
+    if (plan_form) first.maximal_boxes = (std::min<std::size_t>)(first.maximal_boxes, 20000);
+    curves = RI::trace_curves<IT>(sys, first);
+    if (plan_form && std::any_of(curves.unresolved.begin(), curves.unresolved.end(),
+                                 [](const RI::Solver_unresolved<IT>& u) { return u.kind == RI::Box_class::PENDING; })) {
+      curves = RI::trace_curves_with_plan<IT>(sys, plan, cp, p);
+      along_plan = true;
+    }
     traced = true;
+    r.block_solves = curves.statistics.block_solves;
     add_unresolved(r, curves.unresolved);
   } else {
     // read, but not a system with isolated roots: say what it is
@@ -177,6 +192,7 @@ int run(const RI::Polynomial_system_file& file, const RI::Solution_plan& plan, c
                   {"boxes", r.boxes},
                   {"krawczyk_tests", r.krawczyk_tests},
                   {"refinements", r.refinements},
+                  {"curve_traced_along_plan", along_plan},
                   {"curve_boxes", curves.statistics.boxes},
                   {"face_solves", curves.statistics.face_solves},
                   {"seconds", {{"read", read_seconds}, {"solve", solve_seconds}}}};
@@ -192,7 +208,9 @@ int run(const RI::Polynomial_system_file& file, const RI::Solution_plan& plan, c
   std::cout << (file.default_box ? " (default box: give 'box' lines to change it)" : "") << "\n";
   RI::write_plan_text(std::cout, plan, sys.variable_names, sys.labels, sys.inequality_labels);
   if (!diagnosis.empty()) std::cout << "diagnosis: " << diagnosis << "\n";
-  if (traced) std::cout << "the solution set is a curve; " << (complete ? "complete" : "NOT complete") << "\n";
+  if (traced)
+    std::cout << "the solution set is a curve, traced " << (along_plan ? "along the plan (block 1, then the others lifted over it)" : "as a whole")
+              << "; " << (complete ? "complete" : "NOT complete") << "\n";
   else std::cout << r.roots.size() << " real root(s) in the box, " << certified << " certified; " << (complete ? "complete" : "NOT complete") << "\n";
   std::cout << std::setprecision(15);
   for (std::size_t i = 0; i < r.roots.size(); ++i) {

@@ -24,6 +24,7 @@
 #include <CGAL/Rigid_incidence/Solution_plan.h>
 #include <CGAL/Rigid_incidence/solve_with_plan.h>
 #include <CGAL/Rigid_incidence/Curve_tracer.h>
+#include <CGAL/Rigid_incidence/trace_curves_with_plan.h>
 #include <CGAL/Rigid_incidence/incidence_tree_parametrization.h>
 #include <CGAL/Rigid_incidence/Reduced_system.h>
 #include <CGAL/Rigid_incidence/Configuration.h>

@@ -121,6 +121,8 @@ struct Curve_statistics
   std::size_t arcs = 0;               ///< arcs between crossings
   std::size_t crossings = 0;          ///< crossing points certified (counted per box)
   std::size_t unmatched = 0;          ///< crossings that could not be matched across a face
+  std::size_t block_solves = 0;       ///< `trace_curves_with_plan()`: square blocks solved over pieces of the curve block
+  std::size_t pieces = 0;             ///< `trace_curves_with_plan()`: pieces of the curve block lifted (halvings included)
   double seconds = 0;                 ///< wall-clock time
 };
 

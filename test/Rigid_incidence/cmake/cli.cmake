@@ -409,11 +409,21 @@ if(TARGET rigid_incidence)
   # parallelogram linkage, so its two circuits cross at two singular points
   add_test(NAME cli_solve_system_four_bar
            COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve-system|${_ri_sys}/four_bar_linkage.txt" -DEXPECT_RC=0
-                   "-DEXPECT_STDOUT=one_degree_of_freedom&&the solution set is a curve; NOT complete&&4 curve branch\\(es\\), 4 with certified topology; 2 unresolved region\\(s\\)&&branch 1 \\(certified\\): [0-9]+ points, from unresolved to unresolved&&unresolved \\(unknown\\): singular"
+                   "-DEXPECT_STDOUT=one_degree_of_freedom&&the solution set is a curve, traced as a whole; NOT complete&&4 curve branch\\(es\\), 4 with certified topology; 2 unresolved region\\(s\\)&&branch 1 \\(certified\\): [0-9]+ points, from unresolved to unresolved&&unresolved \\(unknown\\): singular"
                    -P ${_ri_cli_script})
   add_test(NAME cli_solve_system_four_bar_inequalities
            COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve-system|${_ri_sys}/four_bar_linkage_ineq.txt|--json" -DEXPECT_RC=0
                    "-DEXPECT_STDOUT=\"structure\": \"one_degree_of_freedom\"&&\"complete\": false&&\"curves\": .\n +.\n +\"certified\": true,\n +\"closed\": false,\n +\"ends\": .\n +\"unresolved\",\n +\"unresolved\"&&\"points\": .&&\"face_solves\": [1-9]"
+                   -P ${_ri_cli_script})
+  # Jansen's linkage with its five inequalities, traced along its plan (the crank, then one
+  # point at a time): the physical leg, one certified closed branch
+  add_test(NAME cli_solve_system_jansen_inequalities
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve-system|${_ri_sys}/jansen_ineq.txt" -DEXPECT_RC=0
+                   "-DEXPECT_STDOUT=one_degree_of_freedom&&the solution set is a curve, traced along the plan .block 1, then the others lifted over it.; complete&&1 curve branch\\(es\\), 1 with certified topology; 0 unresolved region\\(s\\)&&branch 1 \\(certified\\): [0-9]+ points, closed"
+                   -P ${_ri_cli_script})
+  add_test(NAME cli_solve_system_jansen_inequalities_json
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve-system|${_ri_sys}/jansen_ineq.txt|--json" -DEXPECT_RC=0
+                   "-DEXPECT_STDOUT=\"complete\": true&&\"curves\": .\n +.\n +\"certified\": true,\n +\"closed\": true&&\"curve_traced_along_plan\": true&&\"block_solves\": [1-9]"
                    -P ${_ri_cli_script})
   add_test(NAME cli_solve_system_rejects_svg
            COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve-system|${_ri_sys}/parallelogram.txt|--svg|x.svg" -DEXPECT_RC=1
