@@ -260,8 +260,8 @@ int main(int argc, char** argv)
         return c;
       }, repeats);
       r.branches = r.cell.roots;
-      if (along_plan) r.note = std::to_string(certified) + " certified branch(es), " + std::to_string(unresolved) + " unresolved region(s)";
-      if (!r.cell.complete && !along_plan) r.note = "not complete (" + std::to_string(budget) + " box budget)";
+      r.note = std::to_string(certified) + " certified branch(es), " + std::to_string(unresolved) + " unresolved region(s)";
+      if (!along_plan && r.cell.boxes >= budget) r.note += ": the " + std::to_string(budget) + " box budget ran out";
       curve_rows.push_back(r);
     };
     trace("4-bar linkage (paper Fig. 5)", "four_bar_linkage.txt", 200000, false);
@@ -309,8 +309,8 @@ int main(int argc, char** argv)
       curve_rows.push_back(r);
     }
     curves_md << "\n## Curves\n\nOne degree of freedom: the whole system traced by `trace_curves()`, or along its plan by "
-              << "`trace_curves_with_plan()` (the crank traced, the later blocks lifted over certified pieces of it; the four-bar's plan "
-              << "is one block, so it is traced whole), scenes that move (`solve_scene()`) and a family (`solve_family()`). *boxes*: "
+              << "`trace_curves_with_plan()` (the crank traced, the later blocks lifted over certified pieces of it; the four-bar is "
+              << "traced whole: along its plan, the crank then the coupler point, the coupler folds at its collinear positions), scenes that move (`solve_scene()`) and a family (`solve_family()`). *boxes*: "
               << "tracer boxes, plus the block solver's boxes along a plan. Wall-clock ms, median of up to " << repeats
               << " repeats (a cell over 1 s runs once).\n\n| system | ms | boxes | branches | complete | note |\n| :-- | --: | --: | --: | :-- | :-- |\n";
     for (const auto& r : curve_rows) {
