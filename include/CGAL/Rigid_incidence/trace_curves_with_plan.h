@@ -252,6 +252,11 @@ template <class IT, class NT> struct Plan_trace_run
   {
     std::vector<IT> value;  // every variable: X0 on block 0's, the later blocks' boxes
     bool inequality_boundary = false;
+    // per later block, the index of its root at the piece's centre: lifts with the same first
+    // k entries have the same values in blocks 1 .. k over the whole piece (each lift's
+    // values in those blocks are the unique root of blocks 1 .. k in its box, the preconditioned
+    // operator being block triangular like the plan, and they agree at the centre)
+    std::vector<std::size_t> path;
   };
 
   // Block b solved with its inputs the boxes of L (those with `known` set).
@@ -297,11 +302,13 @@ template <class IT, class NT> struct Plan_trace_run
       for (const Lift& L : lifts) {
         Solver_result<IT> res = solve_block(b, L, known);
         if (!res.unresolved.empty()) return false;
-        for (const auto& r : res.roots) {
+        for (std::size_t q = 0; q < res.roots.size(); ++q) {
+          const auto& r = res.roots[q];
           if (!r.certified) return false;
           Lift M = L;
           for (std::size_t k = 0; k < blocks[b].variables.size(); ++k) M.value[blocks[b].variables[k]] = r.enclosure[k];
           M.inequality_boundary = M.inequality_boundary || r.on_inequality_boundary;
+          M.path.push_back(q);
           next.push_back(M);
         }
       }
@@ -372,9 +379,9 @@ template <class IT, class NT> struct Plan_trace_run
         if (all) { why = "two lifts' boxes overlap"; return false; }
       }
     // completeness: above each lift's boxes of the blocks before b, block b solved with those
-    // boxes as its inputs has exactly the roots the lifts give (each of its certified boxes
-    // inside a lift's box or holding one: both hold one root for each input, so they are the
-    // same root) and roots whose partial lifts die (dies()), and no unresolved box
+    // boxes as its inputs has the roots the lifts agreeing with it before b give (root boxes
+    // and lift boxes meet one to one: every root lies in some root box, each holds one root per
+    // input), and roots or unresolved boxes whose partial lifts die (dies())
     if (out.empty()) {
       Lift S;
       S.value.assign(n, IT(0));
@@ -387,18 +394,13 @@ template <class IT, class NT> struct Plan_trace_run
       for (std::size_t j : v0) known[j] = 1;
       for (std::size_t b = 1; b < blocks.size(); ++b) {
         const Plan_block& blk = blocks[b];
-        // the lifts that agree with L on the blocks before b, with different roots in b
+        // the lifts that agree with L on the blocks before b (the same roots there at the
+        // centre), one per root of block b
         std::vector<const Lift*> same;
         for (const Lift& M : out) {
-          bool agree = true;
-          for (std::size_t j : down) if (known[j]) agree = agree && meet(M.value[j], L.value[j]);
-          if (!agree) continue;
+          if (!std::equal(M.path.begin(), M.path.begin() + (b - 1), L.path.begin())) continue;
           bool fresh = true;
-          for (const Lift* S : same) {
-            bool all = true;
-            for (std::size_t j : blk.variables) all = all && meet(S->value[j], M.value[j]);
-            if (all) fresh = false;
-          }
+          for (const Lift* S : same) fresh = fresh && S->path[b - 1] != M.path[b - 1];
           if (fresh) same.push_back(&M);
         }
         Solver_result<IT> res = solve_block(b, L, known);
