@@ -469,8 +469,7 @@ std::pair<double, double> dense_size(const RI::Polynomial_system<NT>& s)
 {
   double largest = 0, sum = 0;
   for (const auto& f : s.equations) {
-    double m = 1;
-    for (std::size_t i = 0; i < f.number_of_variables(); ++i) m *= double(f.degree(i) + 1);
+    const double m = f.dense_array_size();
     largest = std::max(largest, m);
     sum += m;
   }

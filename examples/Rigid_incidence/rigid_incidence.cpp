@@ -601,5 +601,10 @@ int main(int argc, char** argv)
   } catch (const RI::Input_error& e) {
     std::cerr << "rigid_incidence: error: " << e.what() << "\n";
     return 2;
+  } catch (const std::bad_alloc&) {
+    // a clear message instead of an abort: the solver refuses systems whose arrays would not
+    // fit (maximal_coefficients), but the machine's memory may still run out on a long solve
+    std::cerr << "rigid_incidence: error: out of memory while working on " << o.scene << "\n";
+    return 3;
   }
 }

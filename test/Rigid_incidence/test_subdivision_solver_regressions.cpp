@@ -9,7 +9,9 @@
 //    default minimal width must follow the precision (both certified);
 //  - a planted system in 3 variables whose 9 roots are all ill-conditioned (cond ~ 1e2 .. 1e3),
 //    without domain reduction: the Krawczyk exclusion must end the boxes along the roots'
-//    near-null directions (complete, 9 roots, the same as with domain reduction, few boxes).
+//    near-null directions (complete, 9 roots, the same as with domain reduction, few boxes);
+//  - an equation in many variables (its dense array too large to allocate): refused with an
+//    Input_error naming it, at the exact limit counted by hand (maximal_coefficients).
 
 #include "test_check.h"
 
@@ -17,6 +19,7 @@
 #include <CGAL/Interval_nt.h>
 #include <CGAL/Rigid_incidence/IO/read_polynomial_system.h>
 #include <CGAL/Rigid_incidence/Subdivision_solver.h>
+#include <CGAL/Rigid_incidence/Curve_tracer.h>
 #ifdef CGAL_USE_MPFI
 #include <CGAL/Gmpfi.h>
 #endif
@@ -88,8 +91,77 @@ static const char* planted = R"(3
 box * -2 2
 )";
 
+// maximal_coefficients: the dense arrays the solver (and the tracer) would allocate, counted by
+// hand, against the limit: refused above it with an Input_error naming the largest equation,
+// solved at it; an equation in 20 variables of degree 2 (3^20 coefficients) is refused at once
+// under the default.
+static void storage_limit()
+{
+  typedef RI::Sparse_polynomial<Q> P;
+  RI::Polynomial_system<Q> s;
+  s.variable_names = {"x", "y", "z"};
+  s.box = {{-1, 1}, {-1, 1}, {-1, 1}};
+  P x = P::variable(3, 0), y = P::variable(3, 1), z = P::variable(3, 2);
+  s.equations = {x * x + y * y + z * z - P::constant(3, Q(1)), x - y, y - z};
+  // x^2 + y^2 + z^2 - 1: 27 coefficients, 3 variables: 27 (1 + 3 + 9) = 351; x - y, y - z: 4 (1 + 2 + 4) = 28 each
+  const double need = 351 + 28 + 28;
+  auto message = [&](double limit) -> std::string {
+    RI::Subdivision_solver_parameters p;
+    p.maximal_coefficients = limit;
+    try {
+      RI::Solver_result<I> r = RI::Subdivision_solver<I>(p).solve(s);
+      return r.complete() && r.roots.size() == 2 ? "solved" : "wrong result";
+    } catch (const RI::Input_error& e) {
+      return e.what();
+    }
+  };
+  CHECK(message(need) == "solved", "a system that needs exactly maximal_coefficients is solved (x = y = z = +-1/sqrt 3)");
+  const std::string m = message(need - 1);
+  CHECK(m.find("407 coefficients") != std::string::npos && m.find("equation 0 in x^2, y^2, z^2") != std::string::npos &&
+            m.find("27 coefficients by itself") != std::string::npos,
+        "one coefficient over the limit: refused, naming equation 0: " + m);
+
+  const std::size_t n = 20;
+  RI::Polynomial_system<Q> big;
+  P sum = P::constant(n, Q(-1));
+  for (std::size_t j = 0; j < n; ++j) {
+    big.variable_names.push_back("v" + std::to_string(j));
+    big.box.push_back({-2, 2});
+    sum = sum + P::variable(n, j) * P::variable(n, j);
+  }
+  big.equations.push_back(sum);
+  for (std::size_t j = 1; j < n; ++j) big.equations.push_back(P::variable(n, j) - P::variable(n, j - 1));
+  bool refused = false;
+  try {
+    RI::Subdivision_solver<I>().solve(big);
+  } catch (const RI::Input_error& e) {
+    refused = std::string(e.what()).find("3.49e+09 coefficients by itself") != std::string::npos;
+  }
+  CHECK(refused, "an equation in 20 variables of degree 2 is refused under the default limit");
+
+  // the tracer counts each equation with its first derivatives: the unit circle in (x, y) is 9 (1 + 2)
+  RI::Polynomial_system<Q> c;
+  c.variable_names = {"x", "y"};
+  c.box = {{-2, 2}, {-2, 2}};
+  P u = P::variable(2, 0), v = P::variable(2, 1);
+  c.equations = {u * u + v * v - P::constant(2, Q(1))};
+  auto traced = [&](double limit) {
+    RI::Curve_tracer_parameters p;
+    p.maximal_coefficients = limit;
+    try {
+      RI::Curve_result<I> r = RI::trace_curves(c, p);
+      return r.complete() && r.curves.size() == 1;
+    } catch (const RI::Input_error&) {
+      return false;
+    }
+  };
+  CHECK(traced(27), "the circle traced with maximal_coefficients = 27");
+  CHECK(!traced(26), "the circle refused with maximal_coefficients = 26");
+}
+
 int main()
 {
+  storage_limit();
   {
     std::vector<Q> p = mignotte(6, 100);
     RI::Solver_result<I> r = RI::Subdivision_solver<I>().solve(univariate<I>(p, -1, 1));

@@ -175,6 +175,15 @@ public:
     for (std::size_t i = 0; i < n_; ++i) if (degree(i) > 0) v.push_back(i);
     return v;
   }
+  /// The number of coefficients of the dense tensor-product array over the variables of
+  /// positive degree, prod (degree in x_i + 1): what `Subdivision_solver` and `trace_curves()`
+  /// store for this polynomial (as a double: it may exceed any integer type).
+  double dense_array_size() const
+  {
+    double m = 1;
+    for (std::size_t i = 0; i < n_; ++i) m *= double(degree(i)) + 1;
+    return m;
+  }
   /// The partial derivative with respect to x_i.
   Sparse_polynomial derivative(std::size_t i) const
   {
@@ -265,6 +274,46 @@ struct Polynomial_system
   /// Number of inequalities.
   std::size_t number_of_inequalities() const { return inequalities.size(); }
 };
+
+namespace internal {
+
+// The dense arrays a solver over tensor-product Bernstein forms allocates for `s` (each equation
+// and inequality over the variables it involves, with `per_variable` and `per_pair` more arrays
+// of at most its size per involved variable and per pair of them: derivatives), against `limit`
+// coefficients: an Input_error (prefixed by `who`) naming the largest equation instead of a
+// failed allocation, or of the machine's whole memory, for an equation in many variables.
+template <class NT>
+void check_dense_storage(const Polynomial_system<NT>& s, double limit, double per_variable, double per_pair, const std::string& who)
+{
+  double total = 0, worst = -1;
+  std::size_t at = 0;
+  auto add = [&](const Sparse_polynomial<NT>& f, std::size_t i) {
+    const double k = double(f.variables().size()), m = f.dense_array_size();
+    total += m * (1 + per_variable * k + per_pair * k * k);
+    if (m > worst) { worst = m; at = i; }
+  };
+  for (std::size_t i = 0; i < s.equations.size(); ++i) add(s.equations[i], i);
+  for (const auto& g : s.inequalities) add(g, std::size_t(-1));
+  if (!(total > limit)) return;
+  std::string which = "an inequality", degrees;
+  if (at != std::size_t(-1)) {
+    // the equation's label (where it comes from: "equation 3" of a file, a distance of a scene)
+    which = at < s.labels.size() && !s.labels[at].empty() ? s.labels[at] : "equation " + std::to_string(at);
+    for (std::size_t v : s.equations[at].variables())
+      degrees += (degrees.empty() ? "" : ", ") + (v < s.variable_names.size() && !s.variable_names[v].empty() ? s.variable_names[v] : "x" + std::to_string(v)) +
+                 "^" + std::to_string(s.equations[at].degree(v));
+  }
+  std::ostringstream os;
+  os.precision(3);
+  os << who << ": the system's dense tensor-product arrays (with their derivatives) would need " << total
+     << " coefficients, more than maximal_coefficients = " << limit << "; the largest is " << which
+     << (degrees.empty() ? std::string() : " in " + degrees) << ", " << worst
+     << " coefficients by itself. Introduce auxiliary variables (e.g. y = x^2 as an equation of its own) so that each equation "
+        "involves fewer variables, or raise maximal_coefficients";
+  throw Input_error(os.str());
+}
+
+} // namespace internal
 
 /*!
 \ingroup PkgRigidIncidenceRef

@@ -60,6 +60,14 @@ struct Subdivision_solver_parameters
   unsigned maximal_precision = 212;
   /// At most this many boxes are visited; what is left is `PENDING`.
   std::size_t maximal_boxes = 200000;
+  /// The solver keeps every equation and inequality as a dense tensor-product array over the
+  /// variables it involves (prod (degree + 1) coefficients), with its first derivatives (one
+  /// array per variable, k of them) and second derivatives (k^2): about (1 + k + k^2) times the
+  /// array. A system that needs more than this many coefficients in all is refused with an
+  /// `Input_error` that names its largest equation, before anything is allocated (an equation
+  /// in 20 variables of degree 2 would need 3^20 = 3.5e9 coefficients for its array alone).
+  /// The default, 2^25, is about 0.8 GB with `CGAL::Interval_nt<false>`.
+  double maximal_coefficients = 33554432;
   /// Wall-clock budget in seconds (0: none); what is left when it runs out is `PENDING`.
   double maximal_seconds = 0;
   /// Fast, non-certified mode: plain double subdivision, Newton polish, no existence proof.

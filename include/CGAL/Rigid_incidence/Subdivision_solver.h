@@ -158,6 +158,8 @@ private:
       if (s.inequalities[i].number_of_variables() != n)
         throw Input_error("Subdivision_solver: inequality " + std::to_string(i) + " is in " +
                           std::to_string(s.inequalities[i].number_of_variables()) + " variables, the system in " + std::to_string(n));
+    // the equations' dense arrays, their k first and k^2 second derivatives
+    internal::check_dense_storage(s, p_.maximal_coefficients, 1, 1, "Subdivision_solver");
     for (std::size_t i = 0; i < n; ++i) {
       if (s.equations[i].number_of_variables() != n)
         throw Input_error("Subdivision_solver: equation " + std::to_string(i) + " is in " +

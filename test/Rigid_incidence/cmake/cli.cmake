@@ -405,6 +405,12 @@ if(TARGET rigid_incidence)
   add_test(NAME cli_solve_system_missing_file
            COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve-system|${CMAKE_CURRENT_BINARY_DIR}/no_such_system.txt" -DEXPECT_RC=2
                    "-DEXPECT_STDERR=rigid_incidence: error: .*no_such_system.txt" -P ${_ri_cli_script})
+  # an equation whose dense Bernstein array would not fit (3^20 coefficients): refused with a
+  # message naming it, exit 2, instead of an aborted allocation
+  add_test(NAME cli_solve_system_too_large
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve-system|${CMAKE_CURRENT_LIST_DIR}/../data/system_too_large.txt" -DEXPECT_RC=2
+                   "-DEXPECT_STDERR=rigid_incidence: error: &&maximal_coefficients&&the largest is equation 1 in x0\\^2, x1\\^2&&3.49e\\+09 coefficients by itself"
+                   -P ${_ri_cli_script})
   # one equation fewer than variables: the paper's four-bar linkage (Fig. 5) as curves; a
   # parallelogram linkage, so its two circuits cross at two singular points
   add_test(NAME cli_solve_system_four_bar
