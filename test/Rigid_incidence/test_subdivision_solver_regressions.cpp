@@ -139,7 +139,7 @@ static void storage_limit()
   }
   CHECK(refused, "an equation in 20 variables of degree 2 is refused under the default limit");
 
-  // the tracer counts each equation with its first derivatives: the unit circle in (x, y) is 9 (1 + 2)
+  // the tracer counts as its face solves do: the unit circle in (x, y) is 9 (1 + 2 + 4) = 63
   RI::Polynomial_system<Q> c;
   c.variable_names = {"x", "y"};
   c.box = {{-2, 2}, {-2, 2}};
@@ -155,8 +155,8 @@ static void storage_limit()
       return false;
     }
   };
-  CHECK(traced(27), "the circle traced with maximal_coefficients = 27");
-  CHECK(!traced(26), "the circle refused with maximal_coefficients = 26");
+  CHECK(traced(63), "the circle traced with maximal_coefficients = 63");
+  CHECK(!traced(62), "the circle refused with maximal_coefficients = 62");
 }
 
 int main()

@@ -74,9 +74,9 @@ struct Curve_tracer_parameters
   unsigned precision = 53;
   /// At most this many boxes are visited; what is left is `PENDING`.
   std::size_t maximal_boxes = 200000;
-  /// As `Subdivision_solver_parameters::maximal_coefficients`: a system whose dense arrays (each
-  /// equation and inequality with its first derivatives) need more coefficients is refused with
-  /// an `Input_error` naming its largest equation.
+  /// As `Subdivision_solver_parameters::maximal_coefficients` (each equation and inequality
+  /// with its first and second derivatives, as the solver of the box faces stores them): a
+  /// larger system is refused with an `Input_error` naming its largest equation.
   double maximal_coefficients = 33554432;
 };
 
@@ -1060,7 +1060,9 @@ Curve_result<IT> trace_curves(const Polynomial_system<NT>& system, const Curve_t
                         " is not a finite nonempty interval");
   for (std::size_t k = 0; k < system.number_of_equations(); ++k)
     if (system.equations[k].is_zero()) throw Input_error("trace_curves: equation " + std::to_string(k + 1) + " is identically zero");
-  internal::check_dense_storage(system, parameters.maximal_coefficients, 1, 0, "trace_curves");
+  // counted as the face solves count (they get the same limit, and a face system is no larger),
+  // so that a system accepted here is never refused on a face
+  internal::check_dense_storage(system, parameters.maximal_coefficients, 1, 1, "trace_curves");
   internal::Solver_precision_guard<IT> guard(parameters.precision);
   internal::Curve_tracer_run<IT, NT> run(system, parameters);
   run.go();
