@@ -96,13 +96,17 @@ int run(const RI::Polynomial_system_file& file, const RI::Solution_plan& plan, c
     cp.precision = o.solve.precision;
     cp.tolerance = (std::max)(o.solve.tolerance, 1e-10);
     if (o.solve.max_boxes > 0) cp.maximal_boxes = o.solve.max_boxes;
-    // the whole system at once; when the plan's curve block comes first and square blocks
-    // follow (Jansen's linkage: the crank, then one point at a time), with at most 20000
+    // the whole system at once; when the plan has one curve block and square blocks
+    // otherwise (Jansen's linkage: the crank, then one point at a time), with at most 20000
     // boxes, and along the plan if that runs out (the whole-system tracer resolves what the
     // lifting cannot, folds of a later block, but not 12 variables)
-    const auto& blocks = plan.blocks();
-    const bool plan_form = blocks.size() > 1 && blocks[0].dimension() == 1 && blocks[0].inputs.empty() &&
-                           std::all_of(blocks.begin() + 1, blocks.end(), [](const RI::Plan_block& b) { return b.dimension() == 0; });
+    // (a plan whose blocks all merge into the curve block has nothing to lift)
+    bool plan_form = false;
+    try {
+      plan_form = RI::internal::curve_block_first(plan, RI::internal::inequality_supports(sys)).size() > 1;
+    } catch (const RI::Input_error&) {
+      plan_form = false;  // not one curve block and square blocks
+    }
     RI::Curve_tracer_parameters first = cp;
     if (plan_form) first.maximal_boxes = (std::min<std::size_t>)(first.maximal_boxes, 20000);
     curves = RI::trace_curves<IT>(sys, first);

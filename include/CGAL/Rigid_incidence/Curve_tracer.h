@@ -74,6 +74,12 @@ struct Curve_tracer_parameters
   unsigned precision = 53;
   /// At most this many boxes are visited; what is left is `PENDING`.
   std::size_t maximal_boxes = 200000;
+  /// Box budget of each zero-dimensional face system (the crossings of the curve with a box
+  /// face, in n-1 variables); a face not settled within it makes the box be split. 0: the
+  /// default, 4000. `trace_curves_with_plan()` raises it to 4000*(n-3) for its traces around
+  /// folds in n > 4 variables (on Jansen's linkage, 12 variables, the faces of a small box
+  /// around a fold need 10000 to 20000 boxes before the box is proved regular).
+  std::size_t face_boxes = 0;
   /// As `Subdivision_solver_parameters::maximal_coefficients` (each equation and inequality
   /// with its first and second derivatives, as the solver of the box faces stores them): a
   /// larger system is refused with an `Input_error` naming its largest equation.
@@ -127,6 +133,7 @@ struct Curve_statistics
   std::size_t unmatched = 0;          ///< crossings that could not be matched across a face
   std::size_t block_solves = 0;       ///< `trace_curves_with_plan()`: square blocks solved over pieces of the curve block
   std::size_t pieces = 0;             ///< `trace_curves_with_plan()`: pieces of the curve block lifted (halvings included)
+  std::size_t fold_traces = 0;        ///< `trace_curves_with_plan()`: whole-system traces around pieces that could not be lifted
   double seconds = 0;                 ///< wall-clock time
 };
 
@@ -682,7 +689,7 @@ private:
     q.precision = P.precision;
     // a face the solver cannot settle quickly (two crossings closer than double precision
     // separates) is settled by a smaller box, or left unresolved at the minimal width
-    q.maximal_boxes = 4000;
+    q.maximal_boxes = P.face_boxes > 0 ? P.face_boxes : 4000;
     q.minimal_width = q.singular_width = 1e-3 * min_width;
     q.positive_dimensional_evidence = 64;
     q.maximal_precision = 0;  // no multiprecision retry on every face near such a pair

@@ -2,8 +2,9 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
 // Curves along a solution plan (decomposition_subdivision_solver.txt, Section 3.4 and
-// Algorithm 6 for m = k - 1): the plan's curve block (block 0) is traced by trace_curves(),
-// and the square blocks after it are lifted over short certified pieces of block 0's branches.
+// Algorithm 6 for m = k - 1): the plan's curve block, merged with the square blocks it depends
+// on (block 0), is traced by trace_curves(), and the other blocks, all square, are lifted over
+// short certified pieces of block 0's branches.
 //
 // A piece runs between two certified points of block 0's curve (nodes: Krawczyk boxes of the
 // curve with one variable t fixed). A parametric Krawczyk test on block 0 with t over the piece's
@@ -15,10 +16,14 @@
 // Each later block is then solved again over the lifts' boxes with interval coefficients, to
 // prove that these are all its roots there. Lifts of consecutive pieces are joined where their
 // boxes meet (a bijection is required: both sets hold every root above the shared node, each
-// one unique in its box). A piece that fails is halved, down to `maximal_halvings` levels; one
-// that still fails (two roots of a later block meet there: a singular point of the whole
-// curve, or a turning point over block 0) becomes an unresolved region where the chains of
-// lifts through it end.
+// one unique in its box). A piece that fails is halved, down to `maximal_halvings` levels. A
+// run of pieces that still fail (two roots of a later block meet there: a fold, where the whole
+// curve turns back over block 0, or a singular point of the whole curve) is traced whole:
+// enclose() boxes every solution above the run (the later blocks solved over it, branching over
+// roots and unresolved boxes), trace_curves() traces the whole system in those boxes, and its
+// arcs must end at the run's two nodes (or at true ends of the curve), where they are joined
+// to the lifts by the roots above the node. Where that fails the run becomes an unresolved
+// region where the chains of lifts through it end.
 
 #ifndef CGAL_RIGID_INCIDENCE_TRACE_CURVES_WITH_PLAN_H
 #define CGAL_RIGID_INCIDENCE_TRACE_CURVES_WITH_PLAN_H
@@ -35,6 +40,7 @@
 #include <Eigen/Dense>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <string>
@@ -53,6 +59,15 @@ struct Plan_trace_parameters
   /// Each later block's solve over a piece visits at most this many boxes (a block whose roots
   /// meet over the piece would otherwise spend the whole budget).
   std::size_t block_boxes = 2000;
+  /// A piece that still fails after the halvings (two roots of a later block meet over it: a
+  /// turning point of the whole curve over block 0) is traced with `trace_curves()` on the whole
+  /// system in small boxes around it, visiting at most this many boxes for each run of such
+  /// pieces; 0: never (the piece stays an unresolved region).
+  std::size_t fold_boxes = 2000;
+  /// The boxes that hold every solution above such a run (the later blocks solved over it,
+  /// branching over their roots and unresolved boxes) are at most this many, and so are the
+  /// block solves that find them, or the run stays an unresolved region.
+  std::size_t fold_leaves = 4096;
 };
 
 namespace internal {
@@ -62,7 +77,7 @@ template <class IT, class NT> struct Plan_trace_run
   typedef Interval_ops<IT> O;
   typedef CGAL::Interval_nt<false> I;
   const Polynomial_system<NT>& sys;
-  const Solution_plan& plan;
+  const std::vector<Plan_block> blocks;  // block 0 the curve block (merged with its ancestors), then square blocks
   const Subdivision_solver_parameters& SP;
   const Plan_trace_parameters& PP;
   const std::size_t n;
@@ -70,15 +85,18 @@ template <class IT, class NT> struct Plan_trace_run
   std::vector<std::vector<Sparse_polynomial<NT>>> D;  // D[i][j]: d f_i / d x_j
   std::vector<std::vector<char>> uses;               // uses[i][j]: f_i involves x_j
   std::size_t block_solves = 0, block_boxes = 0, pieces = 0, halvings = 0;
+  std::vector<std::size_t> plan_index;  // each block's index in the plan, for messages
 
-  Plan_trace_run(const Polynomial_system<NT>& s, const Solution_plan& p, const Subdivision_solver_parameters& sp, const Plan_trace_parameters& pp)
-      : sys(s), plan(p), SP(sp), PP(pp), n(s.number_of_variables())
+  std::string block_name(std::size_t b) const { return "block " + std::to_string(b < plan_index.size() ? plan_index[b] : b) + " of the plan"; }
+
+  Plan_trace_run(const Polynomial_system<NT>& s, const std::vector<Plan_block>& p, const Subdivision_solver_parameters& sp, const Plan_trace_parameters& pp)
+      : sys(s), blocks(p), SP(sp), PP(pp), n(s.number_of_variables())
   {
-    v0 = plan.blocks()[0].variables;
-    e0 = plan.blocks()[0].equations;
-    for (std::size_t b = 1; b < plan.blocks().size(); ++b) {
-      down.insert(down.end(), plan.blocks()[b].variables.begin(), plan.blocks()[b].variables.end());
-      down_eq.insert(down_eq.end(), plan.blocks()[b].equations.begin(), plan.blocks()[b].equations.end());
+    v0 = blocks[0].variables;
+    e0 = blocks[0].equations;
+    for (std::size_t b = 1; b < blocks.size(); ++b) {
+      down.insert(down.end(), blocks[b].variables.begin(), blocks[b].variables.end());
+      down_eq.insert(down_eq.end(), blocks[b].equations.begin(), blocks[b].equations.end());
     }
     D.resize(sys.equations.size());
     uses.resize(sys.equations.size());
@@ -226,9 +244,7 @@ template <class IT, class NT> struct Plan_trace_run
   // cannot be proved that for each t between them there is exactly one curve point in X0.
   bool piece_box(const Node& a, const Node& b, std::vector<I>& X0) const
   {
-    std::size_t t = 0;
-    for (std::size_t k = 1; k < v0.size(); ++k)
-      if (std::abs(b.p[k] - a.p[k]) > std::abs(b.p[t] - a.p[t])) t = k;
+    const std::size_t t = piece_variable(a, b);
     const I T(std::min(a.box[t].inf(), b.box[t].inf()), std::max(a.box[t].sup(), b.box[t].sup()));
     std::vector<std::size_t> Y, P{v0[t]};
     for (std::size_t k = 0; k < v0.size(); ++k) if (k != t) Y.push_back(v0[k]);
@@ -260,9 +276,10 @@ template <class IT, class NT> struct Plan_trace_run
   };
 
   // Block b solved with its inputs the boxes of L (those with `known` set).
-  Solver_result<IT> solve_block(std::size_t b, const Lift& L, const std::vector<char>& known)
+  // With `whole`, a chain of unknown boxes does not stop the solve (enclose(): every box counts).
+  Solver_result<IT> solve_block(std::size_t b, const Lift& L, const std::vector<char>& known, bool whole = false)
   {
-    const Plan_block& blk = plan.blocks()[b];
+    const Plan_block& blk = blocks[b];
     Polynomial_system<IT> s;
     for (std::size_t j : blk.variables) {
       s.variable_names.push_back(j < sys.variable_names.size() ? sys.variable_names[j] : "x" + std::to_string(j));
@@ -273,6 +290,7 @@ template <class IT, class NT> struct Plan_trace_run
     Subdivision_solver_parameters q = SP;
     q.maximal_precision = 0;  // interval coefficients: no higher precision to try
     q.maximal_boxes = (std::min)(q.maximal_boxes, PP.block_boxes);
+    if (whole) q.positive_dimensional_evidence = 0;
     // the roots for all inputs in the box fill a region about as wide as the inputs: the
     // Krawczyk test must see a box that holds it, not pieces of it
     double input = 0;
@@ -288,12 +306,20 @@ template <class IT, class NT> struct Plan_trace_run
   // every lift over the point u of block 0 (inputs crisp), block by block
   bool lift_point(const std::vector<double>& u, std::vector<Lift>& out)
   {
-    const auto& blocks = plan.blocks();
+    std::vector<IT> box;
+    for (double x : u) box.push_back(O::make(O::bound_from_double(x), O::bound_from_double(x)));
+    return lift_box(box, out);
+  }
+
+  // every lift over block 0's points in the box u (over v0), block by block: each lift's boxes
+  // hold one root for every input in u; false if some block is not resolved there
+  bool lift_box(const std::vector<IT>& u, std::vector<Lift>& out)
+  {
     Lift start;
     start.value.assign(n, IT(0));
     std::vector<char> known(n, 0);
     for (std::size_t k = 0; k < v0.size(); ++k) {
-      start.value[v0[k]] = O::make(O::bound_from_double(u[k]), O::bound_from_double(u[k]));
+      start.value[v0[k]] = u[k];
       known[v0[k]] = 1;
     }
     std::vector<Lift> lifts{start};
@@ -328,7 +354,6 @@ template <class IT, class NT> struct Plan_trace_run
   // circle intersection whose leg fails a later orientation inequality).
   bool dies(std::size_t b, const Lift& P, std::vector<char> known, int depth = 0)
   {
-    const auto& blocks = plan.blocks();
     if (b >= blocks.size() || depth > 64) return false;
     Solver_result<IT> res = solve_block(b, P, known);
     for (std::size_t j : blocks[b].variables) known[j] = 1;
@@ -351,7 +376,6 @@ template <class IT, class NT> struct Plan_trace_run
   // cannot all be certified there.
   bool lift_piece(const std::vector<I>& X0, std::vector<Lift>& out, std::string& why)
   {
-    const auto& blocks = plan.blocks();
     std::vector<double> uc(v0.size());
     for (std::size_t k = 0; k < v0.size(); ++k) uc[k] = 0.5 * X0[k].inf() + 0.5 * X0[k].sup();
     std::vector<Lift> centre;
@@ -409,11 +433,11 @@ template <class IT, class NT> struct Plan_trace_run
           for (std::size_t k = 0; k < blk.variables.size(); ++k) M.value[blk.variables[k]] = u.box[k];
           std::vector<char> after = known;
           for (std::size_t j : blk.variables) after[j] = 1;
-          if (!dies(b + 1, M, after)) { why = "block " + std::to_string(b) + " over the piece: " + u.reason; return false; }
+          if (!dies(b + 1, M, after)) { why = block_name(b) + " over the piece: " + u.reason; return false; }
         }
         std::vector<char> hit(same.size(), 0);
         for (const auto& root : res.roots) {
-          if (!root.certified) { why = "block " + std::to_string(b) + " over the piece: a root not certified"; return false; }
+          if (!root.certified) { why = block_name(b) + " over the piece: a root not certified"; return false; }
           // the lifts whose boxes meet the root's box
           std::size_t h = same.size(), meets = 0;
           for (std::size_t s = 0; s < same.size(); ++s) {
@@ -421,7 +445,7 @@ template <class IT, class NT> struct Plan_trace_run
             for (std::size_t k = 0; k < blk.variables.size(); ++k) all = all && meet(root.enclosure[k], same[s]->value[blk.variables[k]]);
             if (all) { h = s; ++meets; }
           }
-          if (meets > 1 || (meets == 1 && hit[h])) { why = "block " + std::to_string(b) + " over the piece: a root's box meets several lifts"; return false; }
+          if (meets > 1 || (meets == 1 && hit[h])) { why = block_name(b) + " over the piece: a root's box meets several lifts"; return false; }
           if (meets == 1) { hit[h] = 1; continue; }
           // a root of no lift: its partial lift must die in the blocks after b
           Lift M = L;
@@ -429,11 +453,11 @@ template <class IT, class NT> struct Plan_trace_run
           std::vector<char> after = known;
           for (std::size_t j : blk.variables) after[j] = 1;
           if (!dies(b + 1, M, after)) {
-            why = "block " + std::to_string(b) + " over the piece: a root the lifts do not account for";
+            why = block_name(b) + " over the piece: a root the lifts do not account for";
             return false;
           }
         }
-        if (std::find(hit.begin(), hit.end(), char(0)) != hit.end()) { why = "block " + std::to_string(b) + " over the piece: a lift's root not found"; return false; }
+        if (std::find(hit.begin(), hit.end(), char(0)) != hit.end()) { why = block_name(b) + " over the piece: a lift's root not found"; return false; }
         // each lift's box meets exactly one root's box, which therefore holds the lift's root
         // (every root lies in some root's box); a root's box met by one lift holds only its root
         for (const Lift* S : same) {
@@ -448,7 +472,7 @@ template <class IT, class NT> struct Plan_trace_run
             for (std::size_t k = 0; k < blk.variables.size(); ++k) all = all && meet(u.box[k], S->value[blk.variables[k]]);
             meets += all;
           }
-          if (meets != 1) { why = "block " + std::to_string(b) + " over the piece: a lift's box meets several roots' boxes"; return false; }
+          if (meets != 1) { why = block_name(b) + " over the piece: a lift's box meets several roots' boxes"; return false; }
         }
         for (std::size_t j : blk.variables) known[j] = 1;
       }
@@ -487,8 +511,8 @@ template <class IT, class NT> struct Plan_trace_run
       for (std::size_t j : down) x[j] = start == 0 ? (*guess)[j] : mid(L.value[j]);
       // block by block: each block's root for p is the one in the lift's box
       bool all = true;
-      for (std::size_t b = 1; b < plan.blocks().size() && all; ++b) {
-        const Plan_block& blk = plan.blocks()[b];
+      for (std::size_t b = 1; b < blocks.size() && all; ++b) {
+        const Plan_block& blk = blocks[b];
         std::vector<double> y = x;
         all = newton(blk.equations, blk.variables, y);
         for (std::size_t j : blk.variables) all = all && O::lower_double(L.value[j]) <= y[j] && y[j] <= O::upper_double(L.value[j]);
@@ -500,6 +524,222 @@ template <class IT, class NT> struct Plan_trace_run
     return x;
   }
 
+  // ---------------------------------------------------------------- folds
+
+  std::size_t fold_traces = 0, fold_trace_boxes = 0, enclose_solves = 0;
+
+  // Replaces boxes that meet (directly or through others) by their hulls, until no two meet:
+  // passes of union-find over all pairs, since a hull may meet boxes its parts did not.
+  static void merge_touching(std::vector<std::vector<IT>>& boxes)
+  {
+    for (std::size_t count = 0; count != boxes.size();) {
+      count = boxes.size();
+      std::vector<std::size_t> root(count);
+      for (std::size_t p = 0; p < count; ++p) root[p] = p;
+      auto find = [&](std::size_t p) { while (root[p] != p) p = root[p] = root[root[p]]; return p; };
+      for (std::size_t p = 0; p < count; ++p)
+        for (std::size_t q = p + 1; q < count; ++q) {
+          bool all = true;
+          for (std::size_t k = 0; k < boxes[p].size() && all; ++k) all = meet(boxes[p][k], boxes[q][k]);
+          if (all) root[find(q)] = find(p);
+        }
+      std::vector<std::vector<IT>> hulls;
+      std::vector<std::size_t> index(count, count);
+      for (std::size_t p = 0; p < count; ++p) {
+        const std::size_t r = find(p);
+        if (index[r] == count) { index[r] = hulls.size(); hulls.push_back(boxes[p]); continue; }
+        std::vector<IT>& h = hulls[index[r]];
+        for (std::size_t k = 0; k < h.size(); ++k)
+          h[k] = O::make(O::bound_from_double((std::min)(O::lower_double(h[k]), O::lower_double(boxes[p][k]))),
+                         O::bound_from_double((std::max)(O::upper_double(h[k]), O::upper_double(boxes[p][k]))));
+      }
+      boxes.swap(hulls);
+    }
+  }
+
+  // Boxes in all the variables that together hold every solution above the box of P's block-0
+  // values: block b and the ones after it solved over the boxes of P, branching over each
+  // root's box and each hull of touching unresolved boxes. False if there would be more than
+  // `fold_leaves` leaves or block solves (branches that die cost a solve each, too).
+  bool enclose(std::size_t b, const Lift& P, std::vector<char> known, std::vector<std::vector<IT>>& leaves)
+  {
+    if (b >= blocks.size()) {
+      leaves.push_back(P.value);
+      return leaves.size() <= PP.fold_leaves;
+    }
+    if (++enclose_solves > PP.fold_leaves) return false;
+    Solver_result<IT> res = solve_block(b, P, known, true);
+    for (std::size_t j : blocks[b].variables) known[j] = 1;
+    // every root of the block lies in a root's box or an unresolved box, unknown or pending
+    // (the solver drops none): touching boxes are branched over as one hull (they are where two
+    // roots meet, the fold), so that a chain of unresolved boxes costs one branch, not one each
+    std::vector<std::vector<IT>> parts;
+    for (const auto& r : res.roots) parts.push_back(r.enclosure);
+    for (const auto& u : res.unresolved) parts.push_back(u.box);
+    merge_touching(parts);
+    for (const auto& part : parts) {
+      Lift M = P;
+      for (std::size_t k = 0; k < blocks[b].variables.size(); ++k) M.value[blocks[b].variables[k]] = part[k];
+      if (!enclose(b + 1, M, known, leaves)) return false;
+    }
+    return true;
+  }
+
+  // An arc of the whole curve over a piece that failed: its ends are at node a (0) or b (1) of
+  // the piece, or true ends of the curve (-1: the search box's boundary, an inequality's).
+  struct Arc
+  {
+    Solution_curve<IT> curve;
+    int node[2] = {-1, -1};
+  };
+
+  // the piece's variable t (the one piece_box() and the halving fix): the largest change
+  // between the nodes
+  std::size_t piece_variable(const Node& a, const Node& b) const
+  {
+    std::size_t t = 0;
+    for (std::size_t k = 1; k < v0.size(); ++k)
+      if (std::abs(b.p[k] - a.p[k]) > std::abs(b.p[t] - a.p[t])) t = k;
+    return t;
+  }
+
+  // Is p (in all the variables) on block 0's side at node N: on the face x_t = N's t, with
+  // block 0's values in N's box (both up to d relative)?
+  bool at_node(const std::vector<double>& p, const Node& N, std::size_t t, double d) const
+  {
+    if (std::abs(p[v0[t]] - N.box[t].inf()) > d * (1 + std::abs(p[v0[t]]))) return false;
+    for (std::size_t k = 0; k < v0.size(); ++k) {
+      const double e = d * (1 + std::abs(p[v0[k]]));
+      if (p[v0[k]] < N.box[k].inf() - e || p[v0[k]] > N.box[k].sup() + e) return false;
+    }
+    return true;
+  }
+
+  // The whole curve over a run of consecutive pieces (the boxes X0s, nodes a and b at its ends,
+  // one variable t for all) whose lifts failed (two roots of a later block meet above it:
+  // the whole curve turns back over block 0 there, or its branches cross), traced by
+  // trace_curves() on the whole system in small boxes. Every solution above the run lies in
+  // the leaves of enclose() over its X0s; the hulls of overlapping leaves, widened in the later
+  // variables (so that no solution lies on those faces) and with the hull of the X0s in block
+  // 0's (block 0's curve meets it at the faces x_t = t_a and t_b only at the two nodes: each X0
+  // holds one curve point per t), are the boxes traced. So an arc ends at a node, at the search box's
+  // boundary or at an inequality; an arc ending anywhere else, or any unresolved region (a
+  // singular point of the whole curve, an arc not certified, a budget) leaves the piece
+  // unresolved. At most PP.fold_boxes boxes for the whole run.
+  bool trace_fold(const Node& a, const Node& b, std::size_t t, const std::vector<std::vector<I>>& X0s, const Curve_tracer_parameters& tracer,
+                  std::vector<Arc>& arcs, std::string& why)
+  {
+    arcs.clear();
+    if (PP.fold_boxes == 0 || X0s.empty()) return false;
+    enclose_solves = 0;
+    std::vector<I> X0 = X0s.front();
+    std::vector<std::vector<IT>> leaves;
+    for (const auto& X : X0s) {
+      Lift S;
+      S.value.assign(n, IT(0));
+      std::vector<char> known(n, 0);
+      for (std::size_t k = 0; k < v0.size(); ++k) {
+        S.value[v0[k]] = to_it(X[k]);
+        known[v0[k]] = 1;
+        X0[k] = I((std::min)(X0[k].inf(), X[k].inf()), (std::max)(X0[k].sup(), X[k].sup()));
+      }
+      if (!enclose(1, S, known, leaves)) { why += "; the later blocks could not be enclosed over it"; return false; }
+    }
+    // clusters: the leaves (over the later variables) widened, hulls of those that meet
+    const std::size_t m = down.size();
+    std::vector<std::vector<IT>> clusters;
+    for (const auto& L : leaves) {
+      std::vector<IT> c(m);
+      for (std::size_t j = 0; j < m; ++j) {
+        const double x = O::lower_double(L[down[j]]), y = O::upper_double(L[down[j]]), w = 0.01 * (y - x);
+        c[j] = O::make(O::bound_from_double(x - w - 1e-9 * (1 + std::abs(x))), O::bound_from_double(y + w + 1e-9 * (1 + std::abs(y))));
+      }
+      clusters.push_back(c);
+    }
+    merge_touching(clusters);
+    Curve_tracer_parameters q = tracer;
+    // the faces of a small box around a fold in many variables need more boxes than the
+    // tracer's default before the box is proved regular (Jansen's linkage: 10000 to 20000)
+    if (q.face_boxes == 0 && n > 4) q.face_boxes = 4000 * (n - 3);
+    std::size_t budget = (std::min)(q.maximal_boxes, PP.fold_boxes);
+    const double d = 4 * (std::max)(q.tolerance, 1e-14);
+    for (const auto& cluster : clusters) {
+      if (budget == 0) { why += "; traced around it: box budget exhausted"; return false; }
+      q.maximal_boxes = budget;
+      Polynomial_system<NT> h = sys;
+      for (std::size_t k = 0; k < v0.size(); ++k) {
+        double l = X0[k].inf(), u = X0[k].sup();
+        if (k != t) {  // a margin around X0, which holds block 0's curve for t in T: none of it is on
+                       // these faces (another branch within the margin ends an arc away from the
+                       // nodes, and the run fails)
+          const double w = 0.01 * (u - l) + 1e-12 * (1 + std::abs(l) + std::abs(u));
+          l -= w;
+          u += w;
+        }
+        h.box[v0[k]] = {(std::max)(l, sys.box[v0[k]].first), (std::min)(u, sys.box[v0[k]].second)};
+      }
+      for (std::size_t j = 0; j < m; ++j)
+        h.box[down[j]] = {(std::max)(O::lower_double(cluster[j]), sys.box[down[j]].first), (std::min)(O::upper_double(cluster[j]), sys.box[down[j]].second)};
+      Curve_result<IT> r = trace_curves<IT>(h, q);
+      ++fold_traces;
+      fold_trace_boxes += r.statistics.boxes;
+      budget -= (std::min)(budget, r.statistics.boxes);
+      if (!r.unresolved.empty()) { why += "; traced around it: " + r.unresolved.front().reason; return false; }
+      for (const auto& curve : r.curves) {
+        if (!curve.certified) { why += "; traced around it: an arc not certified"; return false; }
+        Arc A;
+        A.curve = curve;
+        if (!curve.closed)
+          for (int e = 0; e < 2; ++e) {
+            const std::vector<double>& p = e == 0 ? curve.points.front() : curve.points.back();
+            if (curve.ends[e] == Curve_end::INEQUALITY) continue;
+            if (curve.ends[e] != Curve_end::BOUNDARY) { why += "; traced around it: an arc ends inside"; return false; }
+            A.node[e] = at_node(p, a, t, d) ? 0 : at_node(p, b, t, d) ? 1 : -1;
+            if (A.node[e] >= 0) continue;
+            bool search_face = false;  // a true end of the curve: it leaves the search box
+            for (std::size_t j = 0; j < n && !search_face; ++j) {
+              const double e2 = d * (1 + std::abs(p[j]));
+              search_face = (std::abs(p[j] - sys.box[j].first) <= e2 && h.box[j].first == sys.box[j].first) ||
+                            (std::abs(p[j] - sys.box[j].second) <= e2 && h.box[j].second == sys.box[j].second);
+            }
+            if (!search_face) { why += "; traced around it: an arc leaves the box away from the nodes"; return false; }
+          }
+        arcs.push_back(std::move(A));
+      }
+    }
+    return true;
+  }
+
+  // Of the lifts Q over a node, the one whose boxes (later variables) come within d of the arc
+  // end p, if exactly one does (the arc's crossing of the node's face is certified within the
+  // tracer's tolerance of p, and it is one of the roots Q hold); else Q.size().
+  std::size_t point_of_end(const std::vector<Lift>& Q, const std::vector<double>& p, double d) const
+  {
+    std::size_t found = Q.size(), count = 0;
+    for (std::size_t q = 0; q < Q.size(); ++q) {
+      bool near = true;
+      for (std::size_t j : down) {
+        const double e = d * (1 + std::abs(p[j]));
+        near = near && O::lower_double(Q[q].value[j]) - e <= p[j] && p[j] <= O::upper_double(Q[q].value[j]) + e;
+      }
+      if (near) { found = q; ++count; }
+    }
+    return count == 1 ? found : Q.size();
+  }
+
+  // Of the lifts Q over a node, the one whose boxes meet those of the lift L of a piece that
+  // holds the node (L's boxes hold its root above every point of the piece), if exactly one.
+  std::size_t point_of_lift(const std::vector<Lift>& Q, const Lift& L) const
+  {
+    std::size_t found = Q.size(), count = 0;
+    for (std::size_t q = 0; q < Q.size(); ++q) {
+      bool all = true;
+      for (std::size_t j : down) all = all && meet(Q[q].value[j], L.value[j]);
+      if (all) { found = q; ++count; }
+    }
+    return count == 1 ? found : Q.size();
+  }
+
   // ---------------------------------------------------------------- pieces
 
   struct Piece
@@ -509,6 +749,8 @@ template <class IT, class NT> struct Plan_trace_run
     std::string why;
     std::vector<I> X0;
     std::vector<Lift> lifts;
+    bool resolved = false;  // failed, but traced whole around the fold (arcs)
+    std::vector<Arc> arcs;
   };
 
   // block 0's curve from node a to node b, halved where it cannot be lifted
@@ -518,13 +760,11 @@ template <class IT, class NT> struct Plan_trace_run
     P.a = a;
     P.b = b;
     ++pieces;
-    if (!piece_box(a, b, P.X0)) P.why = "block 0's curve not certified between two of its points";
+    if (!piece_box(a, b, P.X0)) { P.why = "block 0's curve not certified between two of its points"; P.X0.clear(); }
     else P.ok = lift_piece(P.X0, P.lifts, P.why);
     if (P.ok || depth >= PP.maximal_halvings) { out.push_back(std::move(P)); return; }
     // halve: the node at the middle value of the piece's fastest variable
-    std::size_t t = 0;
-    for (std::size_t k = 1; k < v0.size(); ++k)
-      if (std::abs(b.p[k] - a.p[k]) > std::abs(b.p[t] - a.p[t])) t = k;
+    const std::size_t t = piece_variable(a, b);
     std::vector<double> m(v0.size());
     for (std::size_t k = 0; k < v0.size(); ++k) m[k] = 0.5 * (a.p[k] + b.p[k]);
     Node M;
@@ -535,6 +775,80 @@ template <class IT, class NT> struct Plan_trace_run
   }
 };
 
+// The blocks of a plan with one degree of freedom as trace_curves_with_plan() lifts them: the
+// curve block merged with the blocks it depends on (directly or not: square blocks whose
+// finitely many roots it takes as inputs), so that block 0 is a curve without inputs (traced
+// whole: one curve for each root of those blocks), then the other blocks in the plan's order.
+// An inequality of a merged block that needs a variable of a block not merged (the plan puts
+// it where its last variable is solved, which may be the curve block although a square block
+// before it is not an input) moves to the first block after which all its variables are known;
+// inequality_variables[q] lists the variables inequality q involves. plan_index, if given,
+// receives each block's index in the plan (block 0: the curve block's), for messages.
+// Throws Input_error if the plan has no curve block or a block that is not square.
+inline std::vector<Plan_block> curve_block_first(const Solution_plan& plan, const std::vector<std::vector<std::size_t>>& inequality_variables,
+                                                 std::vector<std::size_t>* plan_index = nullptr)
+{
+  const auto& blocks = plan.blocks();
+  std::size_t c = blocks.size();
+  for (std::size_t b = 0; b < blocks.size(); ++b) {
+    if (blocks[b].dimension() == 1 && c == blocks.size()) { c = b; continue; }
+    if (blocks[b].dimension() != 0)
+      throw Input_error("trace_curves_with_plan: block " + std::to_string(b) + " has " + std::to_string(blocks[b].equations.size()) + " equation(s) in " +
+                        std::to_string(blocks[b].variables.size()) + " variable(s): only one curve block and square blocks can be traced");
+  }
+  if (plan.structure() != Solution_plan::ONE_DEGREE_OF_FREEDOM || c == blocks.size())
+    throw Input_error("trace_curves_with_plan: the plan has no curve block (one equation fewer than variables)");
+  std::vector<char> merged(blocks.size(), 0);
+  merged[c] = 1;
+  for (std::size_t b = c + 1; b-- > 0;)  // depends_on points to earlier blocks only
+    if (merged[b])
+      for (std::size_t d : blocks[b].depends_on) merged[d] = 1;
+  std::vector<Plan_block> out(1);
+  std::vector<std::size_t> index(1, c);
+  for (std::size_t b = 0; b < blocks.size(); ++b) {
+    if (!merged[b]) { out.push_back(blocks[b]); index.push_back(b); continue; }
+    Plan_block& f = out[0];
+    f.equations.insert(f.equations.end(), blocks[b].equations.begin(), blocks[b].equations.end());
+    f.variables.insert(f.variables.end(), blocks[b].variables.begin(), blocks[b].variables.end());
+    f.inequalities.insert(f.inequalities.end(), blocks[b].inequalities.begin(), blocks[b].inequalities.end());
+  }
+  for (auto* v : {&out[0].equations, &out[0].variables, &out[0].inequalities}) std::sort(v->begin(), v->end());
+  // the block of out that solves each variable
+  std::vector<std::size_t> where(plan.number_of_variables(), Solution_plan::none);
+  for (std::size_t b = 0; b < out.size(); ++b)
+    for (std::size_t j : out[b].variables) where[j] = b;
+  std::vector<std::size_t> keep;
+  for (std::size_t q : out[0].inequalities) {
+    std::size_t last = 0;
+    if (q < inequality_variables.size())
+      for (std::size_t j : inequality_variables[q])
+        if (j < where.size() && where[j] != Solution_plan::none) last = (std::max)(last, where[j]);
+    if (last == 0) keep.push_back(q);
+    else {
+      auto& to = out[last].inequalities;
+      to.insert(std::upper_bound(to.begin(), to.end(), q), q);
+    }
+  }
+  out[0].inequalities = keep;
+  // depends_on and inputs are not used by the lifts (each block is solved with every variable
+  // solved before it known), nor kept consistent with the new order
+  for (auto& b : out) {
+    b.depends_on.clear();
+    b.inputs.clear();
+  }
+  if (plan_index) *plan_index = index;
+  return out;
+}
+
+// The variables each inequality of the system involves.
+template <class NT>
+std::vector<std::vector<std::size_t>> inequality_supports(const Polynomial_system<NT>& s)
+{
+  std::vector<std::vector<std::size_t>> r;
+  for (const auto& g : s.inequalities) r.push_back(g.variables());
+  return r;
+}
+
 } // namespace internal
 
 /*!
@@ -543,29 +857,36 @@ template <class IT, class NT> struct Plan_trace_run
 solution plan: the plan's curve block by `trace_curves()`, the square blocks after it lifted
 over short certified pieces of it.
 
-The plan (`Solution_plan`, structure `ONE_DEGREE_OF_FREEDOM`) must have its curve block
-first, without inputs, and only square blocks after it, as Jansen's linkage has (the crank,
-then one point at a time). Block 0 is traced by `trace_curves()`; its polyline points become
-certified nodes of its curve, and between consecutive nodes a parametric Krawczyk test proves
-the piece of curve inside a narrow box X0. Over X0 each later block's roots at the centre are
-continued by a parametric Krawczyk test on all later blocks together (one root in a box for
-every input in X0: the lift is single-valued and continuous over the piece), and each later
-block is solved again over the lifts' boxes with interval coefficients to prove they are all
-its roots there (with its inequalities: the physical branch only). Lifts of consecutive pieces
-are joined where their boxes meet (a bijection). A piece that fails is halved, at most
-`plan_parameters.maximal_halvings` times; then it becomes an unresolved region (two roots of a
-later block meet there: a singular point of the whole curve, or a turning point over block 0)
-where the chains of lifts end, uncertified. A closed branch of block 0 closes its lifts after
-one or more turns. Each polyline point is a node with the later blocks' values by Newton in
-their boxes.
+The plan (`Solution_plan`, structure `ONE_DEGREE_OF_FREEDOM`) must have one curve block (one
+equation fewer than variables) and square blocks otherwise, as Jansen's linkage has (the crank,
+then one point at a time). Block 0 is the curve block merged with the square blocks it depends
+on, directly or not (their finitely many roots are its inputs: merged, its curve is one curve for
+each of their roots); the other blocks follow in the plan's order. Block 0 is traced by
+`trace_curves()`; its polyline points become certified nodes of its curve, and between
+consecutive nodes a parametric Krawczyk test proves the piece of curve inside a narrow box X0.
+Over X0 each later block's roots at the centre are continued by a parametric Krawczyk test on
+all later blocks together (one root in a box for every input in X0: the lift is single-valued
+and continuous over the piece), and each later block is solved again over the lifts' boxes with
+interval coefficients to prove they are all its roots there (with its inequalities: the
+physical branch only). Lifts of consecutive pieces are joined where their boxes meet (a
+bijection). A piece that fails is halved, at most `plan_parameters.maximal_halvings` times. A
+run of pieces that still fail (two roots of a later block meet there: a fold, where the whole
+curve turns back over block 0, or a singular point of the whole curve) is traced whole: every
+solution above it is boxed by solving the later blocks over it (at most
+`plan_parameters.fold_leaves` boxes), `trace_curves()` traces the whole system in those boxes
+(at most `plan_parameters.fold_boxes` boxes) and its arcs are joined at the run's two nodes to
+the lifts there, one to one. Where that fails the run becomes an unresolved region where the
+chains of lifts end, uncertified. A closed branch of block 0 closes its lifts after one or more
+turns. Each polyline point is a node with the later blocks' values by Newton in their boxes.
 
-A branch is certified when block 0's branch is and every piece of it was lifted and joined,
-so that the branch is the whole solution curve above block 0's branch, its points within
-`max_residual` of the curve. Caveat: the chain of pieces follows block 0's polyline through
-nodes certified next to its points; that the chain is the tracer's branch (and not a branch
-within 1e-12 of it) rests on the tracer's polyline accuracy.
+A branch is certified when block 0's branch is and every piece of it was lifted or traced whole
+and joined, so that the branch is the whole solution curve above block 0's branch, its points
+within `max_residual` of the curve. Caveat: the chain of pieces follows block 0's polyline
+through nodes certified next to its points; that the chain is the tracer's branch (and not a
+branch within 1e-12 of it) rests on the tracer's polyline accuracy.
 
-\throws Input_error if the plan is not of this form (use `trace_curves()` on the whole system).
+\throws Input_error if the plan has no curve block or a block that is neither square nor the
+curve block (use `trace_curves()` on the whole system).
 */
 template <class IT = CGAL::Interval_nt<false>, class NT>
 Curve_result<IT> trace_curves_with_plan(const Polynomial_system<NT>& system, const Solution_plan& plan,
@@ -574,18 +895,15 @@ Curve_result<IT> trace_curves_with_plan(const Polynomial_system<NT>& system, con
                                         const Plan_trace_parameters& plan_parameters = Plan_trace_parameters())
 {
   const auto start = std::chrono::steady_clock::now();
-  const auto& blocks = plan.blocks();
-  if (plan.structure() != Solution_plan::ONE_DEGREE_OF_FREEDOM || blocks.empty() || blocks[0].dimension() != 1 || !blocks[0].inputs.empty())
-    throw Input_error("trace_curves_with_plan: the plan's first block must be its curve block, without inputs");
-  for (std::size_t b = 1; b < blocks.size(); ++b)
-    if (blocks[b].dimension() != 0)
-      throw Input_error("trace_curves_with_plan: block " + std::to_string(b) + " is not square");
+  std::vector<std::size_t> plan_index;
+  const std::vector<Plan_block> blocks = internal::curve_block_first(plan, internal::inequality_supports(system), &plan_index);
   const std::size_t n = system.number_of_variables();
   typedef internal::Plan_trace_run<IT, NT> Run;
   typedef typename Run::Lift Lift;
   typedef typename Run::Piece Piece;
   typedef typename Run::Node Node;
-  Run run(system, plan, solver, plan_parameters);
+  Run run(system, blocks, solver, plan_parameters);
+  run.plan_index = plan_index;
   const auto& v0 = run.v0;
 
   // block 0 on its own variables
@@ -595,8 +913,15 @@ Curve_result<IT> trace_curves_with_plan(const Polynomial_system<NT>& system, con
     s0.variable_names.push_back(j < system.variable_names.size() ? system.variable_names[j] : "x" + std::to_string(j));
     s0.box.push_back(system.box[j]);
   }
-  for (std::size_t i : blocks[0].equations) s0.equations.push_back(renumber(system.equations[i]));
-  for (std::size_t q : blocks[0].inequalities) s0.inequalities.push_back(renumber(system.inequalities[q]));
+  auto in_block0 = [&](const Sparse_polynomial<NT>& f, const std::string& what) {
+    for (std::size_t j : f.variables())
+      if (!std::binary_search(v0.begin(), v0.end(), j))  // the plan does not match the system
+        throw Input_error("trace_curves_with_plan: " + what + " of the curve block involves a variable it does not solve (" +
+                          (j < system.variable_names.size() ? system.variable_names[j] : "x" + std::to_string(j)) + "): a plan of another system?");
+    return renumber(f);
+  };
+  for (std::size_t i : blocks[0].equations) s0.equations.push_back(in_block0(system.equations[i], "equation " + std::to_string(i + 1)));
+  for (std::size_t q : blocks[0].inequalities) s0.inequalities.push_back(in_block0(system.inequalities[q], "inequality " + std::to_string(q + 1)));
   Curve_result<IT> c0 = trace_curves<IT>(s0, tracer);
 
   Curve_result<IT> out;
@@ -645,77 +970,240 @@ Curve_result<IT> trace_curves_with_plan(const Polynomial_system<NT>& system, con
     const std::size_t spans = c.closed ? nodes.size() : nodes.size() - 1;
     for (std::size_t s = 0; s < spans; ++s) run.pieces_between(nodes[s], nodes[(s + 1) % nodes.size()], 0, pieces);
     const std::size_t P = pieces.size();
-    for (const Piece& p : pieces)
-      if (!p.ok) {
-        Solver_unresolved<IT> v;
-        v.reason = "not lifted over a piece of block 0's curve: " + p.why;
-        std::vector<IT> b0;
-        for (std::size_t k = 0; k < v0.size(); ++k)
-          b0.push_back(Run::to_it(typename Run::I((std::min)(p.a.box[k].inf(), p.b.box[k].inf()), (std::max)(p.a.box[k].sup(), p.b.box[k].sup()))));
-        v.box = whole_box(b0);
-        out.unresolved.push_back(v);
-      }
-    // the joins: piece s to piece s + 1 (and the last to the first on a closed branch)
-    const std::size_t joins = c.closed ? P : (P ? P - 1 : 0);
-    std::vector<std::vector<std::size_t>> to(joins);
-    std::vector<char> joined(joins, 0);
-    for (std::size_t s = 0; s < joins; ++s) joined[s] = pieces[s].ok && pieces[(s + 1) % P].ok && run.match(pieces[s].lifts, pieces[(s + 1) % P].lifts, to[s]);
-    const bool all_joined = std::find(joined.begin(), joined.end(), char(0)) == joined.end();
-    // follow every lift; on a closed branch a lift may come back to another lift of piece 0
-    std::vector<std::vector<char>> used(P);
-    for (std::size_t s = 0; s < P; ++s) used[s].assign(pieces[s].lifts.size(), 0);
-    for (std::size_t s0 = 0; s0 < P; ++s0)
-      for (std::size_t i0 = 0; i0 < pieces[s0].lifts.size(); ++i0) {
-        if (used[s0][i0]) continue;
-        // a chain starts where it cannot be entered (piece 0 of an open branch, or after a
-        // failed join); on a closed branch whose joins all hold it starts at piece 0
-        const bool entered = s0 > 0 ? bool(joined[s0 - 1]) : (c.closed && joins > 0 && joined[joins - 1]);
-        if (entered && !(c.closed && all_joined && s0 == 0)) continue;
-        Solution_curve<IT> whole;
-        const bool from_start = s0 == 0 && (!c.closed || all_joined);
-        whole.certified = c.certified && from_start;
-        whole.ends[0] = from_start ? c.ends[0] : Curve_end::UNRESOLVED;
-        whole.end_region[0] = from_start && !c.closed ? c.end_region[0] : -1;
-        std::size_t s = s0, i = i0;
-        while (true) {
-          used[s][i] = 1;
-          const Lift& L = pieces[s].lifts[i];
-          whole.boxes.push_back(L.value);
-          whole.on_inequality_boundary = whole.on_inequality_boundary || L.inequality_boundary || c.on_inequality_boundary;
-          if (whole.points.empty()) whole.points.push_back(run.point(pieces[s].a.p, L));
-          whole.points.push_back(run.point(pieces[s].b.p, L, &whole.points.back()));
-          if (s + 1 == P && !c.closed) {
-            whole.ends[1] = c.ends[1];
-            whole.end_region[1] = c.end_region[1];
-            break;
-          }
-          if (!joined[s]) {
-            whole.ends[1] = Curve_end::UNRESOLVED;
-            whole.certified = false;
-            break;
-          }
-          const std::size_t t = (s + 1) % P, k = to[s][i];
-          if (t == 0 && used[t][k]) {
-            if (t == s0 && k == i0) {
-              whole.closed = true;
-              whole.ends[0] = whole.ends[1] = Curve_end::CLOSED;
-            } else {  // back at piece 0 on a lift whose chain was already followed
-              whole.certified = false;
-              whole.ends[1] = Curve_end::UNRESOLVED;
-            }
-            break;
-          }
-          s = t;
-          i = k;
+    if (c.closed) {  // start at a piece that was lifted: a run of failed pieces then never wraps around
+      std::size_t r = 0;
+      while (r < P && !pieces[r].ok) ++r;
+      if (r < P) std::rotate(pieces.begin(), pieces.begin() + long(r), pieces.end());
+    }
+    // runs of consecutive failed pieces along one variable, traced whole around their folds
+    // (a fold at a node between two pieces lies inside the run); the arcs go to the run's first
+    // piece, first[s] is the run's first piece for every piece of it
+    std::vector<std::size_t> first(P), last(P);
+    for (std::size_t s = 0; s < P; ++s) first[s] = last[s] = s;
+    for (std::size_t s = 0; s < P;) {
+      if (pieces[s].ok || pieces[s].X0.empty()) { ++s; continue; }
+      const std::size_t t = run.piece_variable(pieces[s].a, pieces[s].b);
+      std::size_t e = s + 1;
+      while (e < P && !pieces[e].ok && !pieces[e].X0.empty() && run.piece_variable(pieces[e].a, pieces[e].b) == t &&
+             (pieces[e].b.p[t] - pieces[e].a.p[t]) * (pieces[s].b.p[t] - pieces[s].a.p[t]) > 0)
+        ++e;
+      std::vector<std::vector<typename Run::I>> X0s;
+      for (std::size_t q = s; q < e; ++q) X0s.push_back(pieces[q].X0);
+      std::string why;
+      if (run.trace_fold(pieces[s].a, pieces[e - 1].b, t, X0s, tracer, pieces[s].arcs, why))
+        for (std::size_t q = s; q < e; ++q) {
+          pieces[q].resolved = true;
+          first[q] = s;
+          last[q] = e - 1;
         }
-        for (const auto& p : whole.points)
-          for (const auto& f : system.equations) whole.max_residual = (std::max)(whole.max_residual, std::abs(f.template evaluate<double>(p)));
-        out.curves.push_back(std::move(whole));
+      else
+        for (std::size_t q = s; q < e; ++q) pieces[q].why += why;
+      s = e;
+    }
+    // node s is piece s's end a; on a closed branch node P is node 0
+    auto node_id = [&](std::size_t s, int side) { return long(c.closed ? (s + std::size_t(side)) % P : s + std::size_t(side)); };
+    // the region where a chain that stops at a node ends: the failed piece next to it, or the
+    // node itself if the lifts could not be joined there
+    std::vector<long> node_region(P + 1, -1);
+    for (std::size_t s = 0; s < P; ++s) {
+      const Piece& p = pieces[s];
+      if (p.ok || p.resolved) continue;
+      Solver_unresolved<IT> v;
+      v.reason = "not lifted over a piece of block 0's curve: " + p.why;
+      std::vector<IT> b0;
+      for (std::size_t k = 0; k < v0.size(); ++k)
+        b0.push_back(Run::to_it(typename Run::I((std::min)(p.a.box[k].inf(), p.b.box[k].inf()), (std::max)(p.a.box[k].sup(), p.b.box[k].sup()))));
+      v.box = whole_box(b0);
+      out.unresolved.push_back(v);
+      for (int side = 0; side < 2; ++side)
+        if (node_region[std::size_t(node_id(s, side))] < 0) node_region[std::size_t(node_id(s, side))] = long(out.unresolved.size() - 1);
+    }
+    // The pieces of the whole curve: the lifts over the pieces that were lifted, the arcs traced
+    // around the ones that were not. Each has two ends at nodes of block 0's branch (node s and
+    // s + 1 for piece s; on a closed branch node P is node 0), or, for an arc, a true end.
+    struct Elem
+    {
+      std::size_t piece, index;
+      bool arc;
+      long node[2];
+    };
+    std::vector<Elem> elems;
+    std::vector<std::vector<std::size_t>> lift_elem(P), arc_elem(P);
+    for (std::size_t s = 0; s < P; ++s) {
+      const Piece& p = pieces[s];
+      if (p.ok)
+        for (std::size_t i = 0; i < p.lifts.size(); ++i) {
+          lift_elem[s].push_back(elems.size());
+          elems.push_back({s, i, false, {node_id(s, 0), node_id(s, 1)}});
+        }
+      if (p.resolved)
+        for (std::size_t i = 0; i < p.arcs.size(); ++i) {
+          const auto& A = p.arcs[i];
+          arc_elem[s].push_back(elems.size());
+          if (A.curve.closed) { elems.push_back({s, i, true, {-1, -1}}); continue; }  // a loop inside the piece
+          auto id = [&](int at) { return at < 0 ? -1L : at == 0 ? node_id(s, 0) : node_id(last[s], 1); };
+          elems.push_back({s, i, true, {id(A.node[0]), id(A.node[1])}});
+        }
+    }
+    // the joins at the nodes between pieces: by the lifts' boxes where both pieces were lifted,
+    // else through the lifts over the node itself (one root per point above it: each must be
+    // met by exactly one end on either side)
+    const std::size_t none = std::size_t(-1);
+    std::vector<std::array<std::pair<std::size_t, int>, 2>> link(elems.size(), {{{none, 0}, {none, 0}}});
+    auto connect = [&](std::size_t e, int x, std::size_t f, int y) { link[e][x] = {f, y}; link[f][y] = {e, x}; };
+    const std::size_t junctions = c.closed ? P : (P ? P - 1 : 0);
+    const double d = 4 * (std::max)(tracer.tolerance, 1e-14);
+    for (std::size_t k = 0; k < junctions; ++k) {
+      const std::size_t L = k, R = (k + 1) % P;  // the node between piece L and piece R
+      const Piece &pl = pieces[L], &pr = pieces[R];
+      if (!(pl.ok || pl.resolved) || !(pr.ok || pr.resolved)) continue;
+      if (pl.resolved && pr.resolved && first[L] == first[R]) continue;  // inside a run
+      std::vector<IT> u;
+      for (const auto& x : pr.a.box) u.push_back(Run::to_it(x));
+      auto not_joined = [&](const std::string& why) {
+        Solver_unresolved<IT> v;
+        v.reason = "lifts not joined at a node of block 0's curve: " + why;
+        v.box = whole_box(u);
+        out.unresolved.push_back(v);
+        node_region[std::size_t(node_id(L, 1))] = long(out.unresolved.size() - 1);
+      };
+      if (pl.ok && pr.ok) {
+        std::vector<std::size_t> to;
+        if (run.match(pl.lifts, pr.lifts, to))
+          for (std::size_t i = 0; i < to.size(); ++i) connect(lift_elem[L][i], 1, lift_elem[R][to[i]], 0);
+        else
+          not_joined("the lifts of the two pieces do not meet one to one");
+        continue;
       }
+      std::vector<Lift> Q;
+      if (!run.lift_box(u, Q)) { not_joined("the later blocks not solved at the node"); continue; }
+      // the ends at this node on either side, with the root above the node each one holds
+      std::vector<std::pair<std::size_t, int>> side_end[2];
+      std::vector<std::size_t> side_point[2];
+      bool fine = true;
+      for (int side = 0; side < 2 && fine; ++side) {
+        const std::size_t s = side == 0 ? (pieces[L].ok ? L : first[L]) : R;  // a run's arcs are at its first piece
+        const int at = side == 0 ? 1 : 0;  // piece L meets the node with its end b, piece R with its end a
+        const Piece& p = pieces[s];
+        if (p.ok)
+          for (std::size_t i = 0; i < p.lifts.size(); ++i) {
+            side_end[side].push_back({lift_elem[s][i], at});
+            side_point[side].push_back(run.point_of_lift(Q, p.lifts[i]));
+          }
+        else
+          for (std::size_t i = 0; i < p.arcs.size(); ++i)
+            for (int e = 0; e < 2; ++e)
+              if (!p.arcs[i].curve.closed && p.arcs[i].node[e] == at) {
+                side_end[side].push_back({arc_elem[s][i], e});
+                const auto& curve = p.arcs[i].curve;
+                side_point[side].push_back(run.point_of_end(Q, e == 0 ? curve.points.front() : curve.points.back(), d));
+              }
+        // a bijection with the roots above the node
+        std::vector<char> hit(Q.size(), 0);
+        fine = side_point[side].size() == Q.size();
+        for (std::size_t q : side_point[side]) {
+          if (q >= Q.size() || hit[q]) fine = false;
+          else hit[q] = 1;
+        }
+      }
+      if (!fine) { not_joined("the ends of the arcs traced around a fold do not meet the roots at the node one to one"); continue; }
+      std::vector<std::size_t> right_of(Q.size());
+      for (std::size_t i = 0; i < side_point[1].size(); ++i) right_of[side_point[1][i]] = i;
+      for (std::size_t i = 0; i < side_point[0].size(); ++i) {
+        const auto& l = side_end[0][i];
+        const auto& r = side_end[1][right_of[side_point[0][i]]];
+        connect(l.first, l.second, r.first, r.second);
+      }
+    }
+    // how a chain ends at the end x of element e that links to nothing
+    auto end_of = [&](const Elem& e, int x, Curve_end& kind, long& region) {
+      region = -1;
+      if (e.node[x] < 0) {  // an arc's true end
+        kind = pieces[e.piece].arcs[e.index].curve.ends[x];
+        return;
+      }
+      kind = Curve_end::UNRESOLVED;
+      region = node_region[std::size_t(e.node[x])];
+      if (!c.closed && e.node[x] == 0) { kind = c.ends[0]; region = c.end_region[0]; }
+      if (!c.closed && e.node[x] == long(P)) { kind = c.ends[1]; region = c.end_region[1]; }
+    };
+    // the element's points from its end x to the other one
+    auto append = [&](Solution_curve<IT>& whole, const Elem& e, int x) {
+      std::vector<std::vector<double>> pts;
+      const Piece& p = pieces[e.piece];
+      if (e.arc) {
+        const auto& A = p.arcs[e.index].curve;
+        pts = A.points;
+        if (x == 1) std::reverse(pts.begin(), pts.end());
+        whole.boxes.insert(whole.boxes.end(), A.boxes.begin(), A.boxes.end());
+        whole.on_inequality_boundary = whole.on_inequality_boundary || A.on_inequality_boundary;
+        whole.certified = whole.certified && A.certified;
+      } else {
+        const Lift& L = p.lifts[e.index];
+        const std::vector<double>& first = x == 0 ? p.a.p : p.b.p;
+        const std::vector<double>& second = x == 0 ? p.b.p : p.a.p;
+        if (whole.points.empty()) pts.push_back(run.point(first, L));
+        else pts.push_back(whole.points.back());
+        pts.push_back(run.point(second, L, &pts.back()));
+        whole.boxes.push_back(L.value);
+        whole.on_inequality_boundary = whole.on_inequality_boundary || L.inequality_boundary || c.on_inequality_boundary;
+      }
+      // the first point is the junction with the element before
+      whole.points.insert(whole.points.end(), pts.begin() + (whole.points.empty() ? 0 : 1), pts.end());
+    };
+    std::vector<char> used(elems.size(), 0);
+    auto follow = [&](std::size_t e0, int x0) {
+      Solution_curve<IT> whole;
+      whole.certified = c.certified;
+      const bool loop = link[e0][x0].first != none;  // entered where it links: a closed chain
+      if (!loop) end_of(elems[e0], x0, whole.ends[0], whole.end_region[0]);
+      std::size_t e = e0;
+      int x = x0;
+      while (true) {
+        used[e] = 1;
+        append(whole, elems[e], x);
+        const int y = 1 - x;
+        const auto next = link[e][y];
+        if (next.first == none) {
+          end_of(elems[e], y, whole.ends[1], whole.end_region[1]);
+          break;
+        }
+        if (next.first == e0 && next.second == x0) {
+          whole.closed = true;
+          whole.ends[0] = whole.ends[1] = Curve_end::CLOSED;
+          break;
+        }
+        if (used[next.first]) {  // cannot happen with one link per end; kept safe
+          whole.ends[1] = Curve_end::UNRESOLVED;
+          break;
+        }
+        e = next.first;
+        x = next.second;
+      }
+      for (int k = 0; k < 2; ++k) whole.certified = whole.certified && whole.ends[k] != Curve_end::UNRESOLVED;
+      for (const auto& p : whole.points)
+        for (const auto& f : system.equations) whole.max_residual = (std::max)(whole.max_residual, std::abs(f.template evaluate<double>(p)));
+      out.curves.push_back(std::move(whole));
+    };
+    for (std::size_t e = 0; e < elems.size(); ++e) {  // loops traced inside one piece
+      if (!elems[e].arc || !pieces[elems[e].piece].arcs[elems[e].index].curve.closed) continue;
+      used[e] = 1;
+      Solution_curve<IT> whole = pieces[elems[e].piece].arcs[elems[e].index].curve;
+      whole.certified = whole.certified && c.certified;
+      out.curves.push_back(std::move(whole));
+    }
+    // chains first (from an end that links to nothing: the branch's start comes first), then loops
+    for (std::size_t e = 0; e < elems.size(); ++e)
+      for (int x = 0; x < 2; ++x)
+        if (!used[e] && link[e][x].first == none) follow(e, x);
+    for (std::size_t e = 0; e < elems.size(); ++e)
+      if (!used[e]) follow(e, 0);
   }
   out.statistics.boxes += run.block_boxes;
   out.statistics.block_solves = run.block_solves;
   out.statistics.pieces = run.pieces;
+  out.statistics.fold_traces = run.fold_traces;
+  out.statistics.boxes += run.fold_trace_boxes;
   out.statistics.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
 }
