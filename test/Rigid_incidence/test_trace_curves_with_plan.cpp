@@ -11,7 +11,8 @@
 //  - A circle with z^2 = x y + 2 above it: two certified closed lifts; with z^2 = x y the lifts
 //    meet on the axes (the whole curve turns back over the circle there) and, traced whole
 //    around those folds, form two certified closed loops, checked against a dense sampling of
-//    the closed form; z^2 = x - 1/2: one loop.
+//    the closed form; z^2 = x - 1/2: one loop. With the folds not traced (fold_boxes = 0), each
+//    run of failed pieces is one region and every chain stopping there names it.
 //  - A curve block after square blocks (a = +-sqrt(2), the circle of radius |a|, z = x y; and
 //    b = +-sqrt(3) besides, merged with the curve block or lifted after it, with an inequality
 //    that needs b): one certified loop per root kept, against the closed form.
@@ -162,9 +163,9 @@ static RI::Polynomial_system<CGAL::Gmpq> system_of(const std::string& text)
 int main()
 {
   check_jansen("jansen_ineq.txt", true);
-  // jansen.txt (without the inequalities: 32 assemblies over most of the crank circle, 24 or
-  // 16 where circle intersections fold) takes about 130 s and is not complete (its 8 runs of
-  // folds are enclosed but not traced whole within fold_boxes in 12 variables, so they stay
+  // jansen.txt (without the inequalities: 32 assemblies over most of the crank circle, fewer
+  // where circle intersections fold) takes about 270 s and is not complete (2 of its 4 runs of
+  // folds are traced whole, the other two run out of fold_boxes in 12 variables and stay
   // unresolved regions): benchmark_plan runs it
 
   {  // two lifts that never meet: z = +- sqrt(x y + 2) over the unit circle (z involves x and y,
@@ -213,6 +214,34 @@ int main()
           for (std::size_t i = 0; i + 1 < c.points.size(); ++i) best = (std::min)(best, dist_to_segment(p, c.points[i], c.points[i + 1]));
         CHECK(best < 0.05, "meeting lifts: (" << p[0] << ", " << p[1] << ", " << p[2] << ") is " << best << " away from the loops");
       }
+  }
+  {  // the same folds, not traced whole (fold_boxes = 0): each run of failed pieces is one
+     // region, and every chain that stops at one names it (end_region) with its end inside
+    auto s = system_of("2 3\nx^2 + y^2 - 1;\nz^2 - x*y;\nbox * -3 3\n");
+    RI::Plan_trace_parameters pp;
+    pp.fold_boxes = 0;
+    auto r = RI::trace_curves_with_plan<IT>(s, plan_of(s), RI::Curve_tracer_parameters(), RI::Subdivision_solver_parameters(), pp);
+    CHECK(!r.complete() && r.statistics.fold_traces == 0, "folds not traced: not complete");
+    CHECK(r.unresolved.size() >= 4 && r.unresolved.size() <= 8, "folds not traced: " << r.unresolved.size() << " regions (4 folds)");
+    std::vector<int> used(r.unresolved.size(), 0);
+    for (const auto& c : r.curves) {
+      CHECK(!c.certified && !c.closed, "folds not traced: the chains stop at the folds, uncertified");
+      for (int e = 0; e < 2; ++e) {
+        if (c.ends[e] != RI::Curve_end::UNRESOLVED) continue;
+        const long g = c.end_region[e];
+        CHECK(g >= 0 && std::size_t(g) < r.unresolved.size(), "folds not traced: an unresolved end names its region (" << g << ")");
+        if (g < 0 || std::size_t(g) >= r.unresolved.size()) continue;
+        ++used[std::size_t(g)];
+        const std::vector<double>& p = e == 0 ? c.points.front() : c.points.back();
+        bool inside = true;
+        for (std::size_t k = 0; k < 2; ++k)  // the curve block's variables x, y
+          inside = inside && CGAL::to_double(r.unresolved[std::size_t(g)].box[k].inf()) - 1e-9 <= p[k] &&
+                   p[k] <= CGAL::to_double(r.unresolved[std::size_t(g)].box[k].sup()) + 1e-9;
+        CHECK(inside, "folds not traced: a chain's end (" << p[0] << ", " << p[1] << ") lies in its region");
+        CHECK(std::abs(p[0] * p[1]) < 0.05, "folds not traced: a chain ends near an axis, where the lifts meet");
+      }
+    }
+    for (std::size_t g = 0; g < used.size(); ++g) CHECK(used[g] >= 2, "folds not traced: region " << g << " is where " << used[g] << " chain ends stop (both lifts, at least)");
   }
   {  // z = +- sqrt(x - 1/2): real on the arc x >= 1/2 of the circle, the lifts meet at its two
      // ends (x = 1/2): one certified closed loop

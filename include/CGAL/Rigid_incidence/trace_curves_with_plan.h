@@ -66,7 +66,7 @@ struct Plan_trace_parameters
   std::size_t fold_boxes = 2000;
   /// The boxes that hold every solution above such a run (the later blocks solved over it,
   /// branching over their roots and unresolved boxes) are at most this many, and so are the
-  /// block solves that find them, or the run stays an unresolved region.
+  /// block solves that find them over each piece, or the run stays an unresolved region.
   std::size_t fold_leaves = 4096;
 };
 
@@ -277,13 +277,16 @@ template <class IT, class NT> struct Plan_trace_run
 
   // Block b solved with its inputs the boxes of L (those with `known` set).
   // With `whole`, a chain of unknown boxes does not stop the solve (enclose(): every box counts).
-  Solver_result<IT> solve_block(std::size_t b, const Lift& L, const std::vector<char>& known, bool whole = false)
+  // (over the search box, or over the boxes of `within` in the block's variables)
+  Solver_result<IT> solve_block(std::size_t b, const Lift& L, const std::vector<char>& known, bool whole = false, const Lift* within = nullptr)
   {
     const Plan_block& blk = blocks[b];
     Polynomial_system<IT> s;
     for (std::size_t j : blk.variables) {
       s.variable_names.push_back(j < sys.variable_names.size() ? sys.variable_names[j] : "x" + std::to_string(j));
       s.box.push_back(sys.box[j]);
+      if (within)
+        s.box.back() = {(std::max)(sys.box[j].first, O::lower_double(within->value[j])), (std::min)(sys.box[j].second, O::upper_double(within->value[j]))};
     }
     for (std::size_t i : blk.equations) s.equations.push_back(restrict_polynomial<IT>(sys.equations[i], blk.variables, L.value, known));
     for (std::size_t q : blk.inequalities) s.inequalities.push_back(restrict_polynomial<IT>(sys.inequalities[q], blk.variables, L.value, known));
@@ -503,7 +506,7 @@ template <class IT, class NT> struct Plan_trace_run
   // the point of the whole curve above block 0's point p on the lift L (Newton from the
   // centres of its boxes, which hold the root for p)
   // (first from `guess`, the previous point of the branch, when given: a short step)
-  std::vector<double> point(const std::vector<double>& p, const Lift& L, const std::vector<double>* guess = nullptr) const
+  std::vector<double> point(const std::vector<double>& p, const Lift& L, const std::vector<double>* guess = nullptr)
   {
     std::vector<double> x(n, 0.0);
     for (std::size_t k = 0; k < v0.size(); ++k) x[v0[k]] = p[k];
@@ -520,7 +523,35 @@ template <class IT, class NT> struct Plan_trace_run
       }
       if (all) return x;
     }
-    for (std::size_t j : down) x[j] = mid(L.value[j]);
+    // Newton left a box (two roots of a block close together, next to a fold): each block
+    // solved at p inside the lift's boxes, where its root for p is the only one
+    {
+      Lift Q = L;
+      std::vector<char> known(n, 0);
+      for (std::size_t k = 0; k < v0.size(); ++k) {
+        Q.value[v0[k]] = O::make(O::bound_from_double(p[k]), O::bound_from_double(p[k]));
+        known[v0[k]] = 1;
+      }
+      bool all = true;
+      for (std::size_t b = 1; b < blocks.size() && all; ++b) {
+        Solver_result<IT> r;
+        try {
+          r = solve_block(b, Q, known, false, &L);
+        } catch (const Input_error&) {
+          all = false;
+          break;
+        }
+        all = r.roots.size() == 1;
+        for (std::size_t k = 0; k < blocks[b].variables.size() && all; ++k) {
+          const std::size_t j = blocks[b].variables[k];
+          x[j] = r.roots[0].approximation[k];
+          Q.value[j] = O::make(O::bound_from_double(x[j]), O::bound_from_double(x[j]));
+          known[j] = 1;
+        }
+      }
+      if (all) return x;
+    }
+    for (std::size_t j : down) x[j] = mid(L.value[j]);  // max_residual tells
     return x;
   }
 
@@ -560,7 +591,8 @@ template <class IT, class NT> struct Plan_trace_run
   // Boxes in all the variables that together hold every solution above the box of P's block-0
   // values: block b and the ones after it solved over the boxes of P, branching over each
   // root's box and each hull of touching unresolved boxes. False if there would be more than
-  // `fold_leaves` leaves or block solves (branches that die cost a solve each, too).
+  // `fold_leaves` leaves, or block solves since enclose_solves was last reset (branches that
+  // die cost a solve each, too).
   bool enclose(std::size_t b, const Lift& P, std::vector<char> known, std::vector<std::vector<IT>>& leaves)
   {
     if (b >= blocks.size()) {
@@ -631,10 +663,10 @@ template <class IT, class NT> struct Plan_trace_run
   {
     arcs.clear();
     if (PP.fold_boxes == 0 || X0s.empty()) return false;
-    enclose_solves = 0;
     std::vector<I> X0 = X0s.front();
     std::vector<std::vector<IT>> leaves;
     for (const auto& X : X0s) {
+      enclose_solves = 0;  // at most fold_leaves block solves for each piece
       Lift S;
       S.value.assign(n, IT(0));
       std::vector<char> known(n, 0);
@@ -1004,19 +1036,37 @@ Curve_result<IT> trace_curves_with_plan(const Polynomial_system<NT>& system, con
     auto node_id = [&](std::size_t s, int side) { return long(c.closed ? (s + std::size_t(side)) % P : s + std::size_t(side)); };
     // the region where a chain that stops at a node ends: the failed piece next to it, or the
     // node itself if the lifts could not be joined there
+    // (one region for each stretch of consecutive pieces that failed, with the first one's reason)
     std::vector<long> node_region(P + 1, -1);
-    for (std::size_t s = 0; s < P; ++s) {
-      const Piece& p = pieces[s];
-      if (p.ok || p.resolved) continue;
+    for (std::size_t s = 0; s < P;) {
+      if (pieces[s].ok || pieces[s].resolved) { ++s; continue; }
+      std::size_t e = s + 1;
+      while (e < P && !pieces[e].ok && !pieces[e].resolved) ++e;
       Solver_unresolved<IT> v;
-      v.reason = "not lifted over a piece of block 0's curve: " + p.why;
+      v.reason = "not lifted over " + (e - s == 1 ? std::string("a piece") : std::to_string(e - s) + " consecutive pieces") +
+                 " of block 0's curve: " + pieces[s].why;
+      v.boxes = e - s;
       std::vector<IT> b0;
-      for (std::size_t k = 0; k < v0.size(); ++k)
-        b0.push_back(Run::to_it(typename Run::I((std::min)(p.a.box[k].inf(), p.b.box[k].inf()), (std::max)(p.a.box[k].sup(), p.b.box[k].sup()))));
+      for (std::size_t k = 0; k < v0.size(); ++k) {
+        double lo = pieces[s].a.box[k].inf(), hi = pieces[s].a.box[k].sup();
+        for (std::size_t q = s; q < e; ++q) {
+          for (const Node* N : {&pieces[q].a, &pieces[q].b}) {
+            lo = (std::min)(lo, N->box[k].inf());
+            hi = (std::max)(hi, N->box[k].sup());
+          }
+          if (!pieces[q].X0.empty()) {  // the piece of block 0's curve lies in X0
+            lo = (std::min)(lo, pieces[q].X0[k].inf());
+            hi = (std::max)(hi, pieces[q].X0[k].sup());
+          }
+        }
+        b0.push_back(Run::to_it(typename Run::I(lo, hi)));
+      }
       v.box = whole_box(b0);
       out.unresolved.push_back(v);
-      for (int side = 0; side < 2; ++side)
-        if (node_region[std::size_t(node_id(s, side))] < 0) node_region[std::size_t(node_id(s, side))] = long(out.unresolved.size() - 1);
+      for (std::size_t q = s; q < e; ++q)
+        for (int side = 0; side < 2; ++side)
+          if (node_region[std::size_t(node_id(q, side))] < 0) node_region[std::size_t(node_id(q, side))] = long(out.unresolved.size() - 1);
+      s = e;
     }
     // The pieces of the whole curve: the lifts over the pieces that were lifted, the arcs traced
     // around the ones that were not. Each has two ends at nodes of block 0's branch (node s and
