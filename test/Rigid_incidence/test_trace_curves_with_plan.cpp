@@ -215,6 +215,17 @@ int main()
         CHECK(best < 0.05, "meeting lifts: (" << p[0] << ", " << p[1] << ", " << p[2] << ") is " << best << " away from the loops");
       }
   }
+  {  // the same folds with fold_stretch = 1: the result must not change (its runs have at most
+     // 2 pieces, so they are not cut; Jansen's linkage, run by benchmark_plan, is where runs of
+     // 160 pieces are cut into stretches and joined through the lifts between them)
+    auto s = system_of("2 3\nx^2 + y^2 - 1;\nz^2 - x*y;\nbox * -3 3\n");
+    RI::Plan_trace_parameters pp;
+    pp.fold_stretch = 1;
+    auto r = RI::trace_curves_with_plan<IT>(s, plan_of(s), RI::Curve_tracer_parameters(), RI::Subdivision_solver_parameters(), pp);
+    std::cout << "z^2 = x y in stretches: " << r.curves.size() << " curves, " << r.unresolved.size() << " unresolved, " << r.statistics.fold_traces << " fold traces\n";
+    CHECK(r.complete() && r.curves.size() == 2, "in stretches: complete, " << r.curves.size() << " curves");
+    for (const auto& c : r.curves) CHECK(c.closed && c.certified && c.max_residual < 1e-9, "in stretches: closed certified loop");
+  }
   {  // the same folds, not traced whole (fold_boxes = 0): each run of failed pieces is one
      // region, and every chain that stops at one names it (end_region) with its end inside
     auto s = system_of("2 3\nx^2 + y^2 - 1;\nz^2 - x*y;\nbox * -3 3\n");

@@ -43,6 +43,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -68,6 +69,10 @@ struct Plan_trace_parameters
   /// branching over their roots and unresolved boxes) are at most this many, and so are the
   /// block solves that find them over each piece, or the run stays an unresolved region.
   std::size_t fold_leaves = 4096;
+  /// A run of more than twice this many failed pieces is traced in stretches of about this
+  /// many, cut at nodes above which every lift is certified, and a stretch whose trace fails
+  /// is halved the same way, at most three times (smaller boxes around each fold).
+  std::size_t fold_stretch = 8;
 };
 
 namespace internal {
@@ -1019,17 +1024,48 @@ Curve_result<IT> trace_curves_with_plan(const Polynomial_system<NT>& system, con
       while (e < P && !pieces[e].ok && !pieces[e].X0.empty() && run.piece_variable(pieces[e].a, pieces[e].b) == t &&
              (pieces[e].b.p[t] - pieces[e].a.p[t]) * (pieces[s].b.p[t] - pieces[s].a.p[t]) > 0)
         ++e;
-      std::vector<std::vector<typename Run::I>> X0s;
-      for (std::size_t q = s; q < e; ++q) X0s.push_back(pieces[q].X0);
-      std::string why;
-      if (run.trace_fold(pieces[s].a, pieces[e - 1].b, t, X0s, tracer, pieces[s].arcs, why))
-        for (std::size_t q = s; q < e; ++q) {
-          pieces[q].resolved = true;
-          first[q] = s;
-          last[q] = e - 1;
+      // is every lift above the node where piece q starts certified (a place to cut the run)?
+      auto liftable = [&](std::size_t q) {
+        std::vector<IT> u;
+        for (const auto& x : pieces[q].a.box) u.push_back(Run::to_it(x));
+        std::vector<Lift> Q;
+        return run.lift_box(u, Q);
+      };
+      // pieces a .. z-1 traced whole; if that fails, halved at a node near the middle where
+      // the lifts are certified, at most three times
+      std::function<void(std::size_t, std::size_t, int)> stretch = [&](std::size_t a, std::size_t z, int depth) {
+        std::vector<std::vector<typename Run::I>> X0s;
+        for (std::size_t q = a; q < z; ++q) X0s.push_back(pieces[q].X0);
+        std::string why;
+        if (run.trace_fold(pieces[a].a, pieces[z - 1].b, t, X0s, tracer, pieces[a].arcs, why)) {
+          for (std::size_t q = a; q < z; ++q) {
+            pieces[q].resolved = true;
+            first[q] = a;
+            last[q] = z - 1;
+          }
+          return;
         }
-      else
-        for (std::size_t q = s; q < e; ++q) pieces[q].why += why;
+        if (depth < 3 && z - a >= 2)
+          for (std::size_t k = 0; k < (z - a) / 2; ++k)
+            for (std::size_t m : {a + (z - a) / 2 - k, a + (z - a) / 2 + k})
+              if (m > a && m < z && liftable(m)) {
+                stretch(a, m, depth + 1);
+                stretch(m, z, depth + 1);
+                return;
+              }
+        for (std::size_t q = a; q < z; ++q) pieces[q].why += why;
+      };
+      // a long run in stretches of about plan_parameters.fold_stretch pieces, cut at nodes
+      // where the lifts are certified: smaller boxes around each fold
+      const std::size_t length = (std::max<std::size_t>)(1, plan_parameters.fold_stretch);
+      for (std::size_t a = s; a < e;) {
+        std::size_t z = e;
+        if (e - a > 2 * length)
+          for (std::size_t q = a + length; q + length <= e; ++q)
+            if (liftable(q)) { z = q; break; }
+        stretch(a, z, 0);
+        a = z;
+      }
       s = e;
     }
     // node s is piece s's end a; on a closed branch node P is node 0
