@@ -164,9 +164,9 @@ int main()
 {
   check_jansen("jansen_ineq.txt", true);
   // jansen.txt (without the inequalities: 32 assemblies over most of the crank circle, fewer
-  // where circle intersections fold) takes about 270 s and is not complete (2 of its 4 runs of
-  // folds are traced whole, the other two run out of fold_boxes in 12 variables and stay
-  // unresolved regions): benchmark_plan runs it
+  // where circle intersections fold) takes about 400 s and is not complete (its runs of folds
+  // are traced whole but for one stretch of 16 pieces that runs out of fold_boxes in 12
+  // variables and stays an unresolved region): benchmark_plan runs it
 
   {  // two lifts that never meet: z = +- sqrt(x y + 2) over the unit circle (z involves x and y,
      // so the plan is the circle, then z)
