@@ -60,9 +60,9 @@ template <class F> static Cell timed(F f, int repeats)
   return runs[runs.size() / 2];
 }
 
-static Cell plan_cell(const System& s, const std::vector<std::vector<std::size_t>>& ineq, double cap, int repeats)
+static Cell plan_cell(const System& s, double cap, int repeats)
 {
-  RI::Solution_plan plan(s, ineq);
+  RI::Solution_plan plan(s);
   RI::Subdivision_solver_parameters p;
   p.maximal_seconds = cap;
   return timed([&] {
@@ -147,8 +147,6 @@ int main(int argc, char** argv)
     const std::string dir = std::string(RIGID_INCIDENCE_DATA_DIR) + "/systems/";
     RI::Polynomial_system_file a = RI::read_polynomial_system(dir + "parallelogram.txt");
     RI::Polynomial_system_file b = RI::read_polynomial_system(dir + "parallelogram_ineq.txt");
-    std::vector<std::vector<std::size_t>> ineq;
-    for (const auto& g : b.system.inequalities) ineq.push_back(g.variables());
     Row r;
     r.name = "parallelogram (paper Fig. 4)";
     r.n = a.system.number_of_variables();
@@ -157,9 +155,9 @@ int main(int argc, char** argv)
     r.largest = plan.largest_block();
     r.expected = 4;
     r.expected_ineq = 1;
-    r.plan = plan_cell(a.system, {}, cap, 50);
+    r.plan = plan_cell(a.system, cap, 50);
     r.whole = whole_cell(a.system, cap, 50);
-    r.plan_ineq = plan_cell(b.system, ineq, cap, 50);
+    r.plan_ineq = plan_cell(b.system, cap, 50);
     r.whole_ineq = whole_cell(b.system, cap, 50);
     rows.push_back(r);
     std::cout << r.name << ": done\n";
@@ -186,10 +184,9 @@ int main(int argc, char** argv)
       r.expected_ineq = count_in_box(p, &g);
       System q = p.system;
       q.inequalities.push_back(affine_poly(g));
-      std::vector<std::vector<std::size_t>> ineq = {q.inequalities[0].variables()};
-      r.plan = plan_cell(p.system, {}, cap, repeats);
+      r.plan = plan_cell(p.system, cap, repeats);
       r.whole = whole_cell(p.system, cap, repeats);
-      r.plan_ineq = plan_cell(q, ineq, cap, repeats);
+      r.plan_ineq = plan_cell(q, cap, repeats);
       r.whole_ineq = whole_cell(q, cap, repeats);
       rows.push_back(r);
       std::cout << r.name << ": plan " << fmt(r.plan.seconds * 1e3) << " ms, whole " << (r.whole.complete ? "" : "> ")
@@ -240,9 +237,7 @@ int main(int argc, char** argv)
     const std::string dir = std::string(RIGID_INCIDENCE_DATA_DIR) + "/";
     auto trace = [&](const std::string& name, const std::string& file, std::size_t budget, bool along_plan) {
       RI::Polynomial_system_file f = RI::read_polynomial_system(dir + "systems/" + file);
-      std::vector<std::vector<std::size_t>> iv;
-      for (const auto& g : f.system.inequalities) iv.push_back(g.variables());
-      const RI::Solution_plan plan(f.system, iv);
+      const RI::Solution_plan plan(f.system);
       Curve_row r;
       r.name = name + (along_plan ? ", along the plan" : ", whole system");
       std::size_t unresolved = 0, certified = 0;

@@ -103,7 +103,7 @@ int run(const RI::Polynomial_system_file& file, const RI::Solution_plan& plan, c
     // (a plan whose blocks all merge into the curve block has nothing to lift)
     bool plan_form = false;
     try {
-      plan_form = RI::internal::curve_block_first(plan, RI::internal::inequality_supports(sys)).size() > 1;
+      plan_form = RI::internal::curve_block_first(plan).size() > 1;
     } catch (const RI::Input_error&) {
       plan_form = false;  // not one curve block and square blocks
     }
@@ -252,9 +252,7 @@ inline int solve_system(const std::string& path, const System_options& o)
 {
   const auto t0 = std::chrono::steady_clock::now();
   RI::Polynomial_system_file file = RI::read_polynomial_system(path);
-  std::vector<std::vector<std::size_t>> ineq;
-  for (const auto& g : file.system.inequalities) ineq.push_back(g.variables());
-  RI::Solution_plan plan(file.system, ineq);
+  RI::Solution_plan plan(file.system);
   const double read_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (o.solve.precision > 53) {
 #ifdef CGAL_USE_MPFI

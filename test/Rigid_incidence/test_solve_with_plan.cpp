@@ -65,6 +65,7 @@ int main(int argc, char** argv)
   std::cout << "test_solve_with_plan: seed " << seed << ", " << systems << " systems\n";
   Rng rng(seed);
   std::size_t solved = 0, roots = 0, blocks = 0, plan_boxes = 0, plain_boxes = 0, plan_boxes_compared = 0, undecomposed_incomplete = 0, refinements = 0, refinements_failed = 0, kept = 0, gmpfi_runs = 0;
+  bool refusal_checked = false;
   for (int s = 0; s < systems; ++s) {
     // blocks of 1 to 3 variables, 2 to 6 variables in all, 1 to 3 factors per equation
     const std::size_t n = std::size_t(rng.uniform(2, 6));
@@ -131,7 +132,17 @@ int main(int argc, char** argv)
     if (!on_g) {
       RI::Polynomial_system<Q> q = p.system;
       q.inequalities.push_back(affine_poly(g));
-      RI::Solution_plan qplan(q, {q.inequalities[0].variables()});
+      RI::Solution_plan qplan(q);
+      CHECK(qplan.number_of_inequalities() == 1 && qplan.inequality_variables(0) == q.inequalities[0].variables(),
+            name << ": the plan of a system takes its inequalities");
+      if (!refusal_checked) {  // a plan made without the inequality would let roots with g < 0 through: refused
+        bool thrown = false;
+        try { RI::solve_with_plan(q, RI::Solution_plan(q, {})); } catch (const RI::Input_error& e) {
+          thrown = std::string(e.what()).find("0 inequalities, the system has 1") != std::string::npos;
+        }
+        CHECK(thrown, name << ": a plan without the system's inequality is not refused");
+        refusal_checked = true;
+      }
       const std::vector<Point> want = expected_roots(p, &g);
       kept += want.size();
       auto qr = RI::solve_with_plan(q, qplan);

@@ -102,10 +102,21 @@ public:
     build();
   }
 
-  /// The plan of `system` (the variables each equation involves with positive degree).
+  /// The plan of `system`: the variables each of its equations, and each of its inequalities,
+  /// involves with positive degree.
   template <class NT>
-  explicit Solution_plan(const Polynomial_system<NT>& system, const std::vector<std::vector<std::size_t>>& inequality_variables = {})
-      : Solution_plan(system.number_of_variables(), supports(system), inequality_variables)
+  explicit Solution_plan(const Polynomial_system<NT>& system)
+      : Solution_plan(system.number_of_variables(), supports(system.equations), supports(system.inequalities))
+  {
+  }
+
+  /// The plan of the equations of `system` with the inequalities `inequality_variables` instead
+  /// of the system's own (`inequality_variables[j]`: the variables inequality j involves; `{}`
+  /// for a plan without inequalities, which `solve_with_plan()` takes only for a system without
+  /// them).
+  template <class NT>
+  Solution_plan(const Polynomial_system<NT>& system, const std::vector<std::vector<std::size_t>>& inequality_variables)
+      : Solution_plan(system.number_of_variables(), supports(system.equations), inequality_variables)
   {
   }
 
@@ -115,6 +126,10 @@ public:
   std::size_t number_of_equations() const { return eqv_.size(); }
   /// The variables equation `i` involves, increasing.
   const std::vector<std::size_t>& equation_variables(std::size_t i) const { return eqv_.at(i); }
+  /// Number of inequalities.
+  std::size_t number_of_inequalities() const { return inv_.size(); }
+  /// The variables inequality `q` involves, increasing.
+  const std::vector<std::size_t>& inequality_variables(std::size_t q) const { return inv_.at(q); }
 
   /// The blocks in the order they are solved (a topological order of the dependencies).
   const std::vector<Plan_block>& blocks() const { return blocks_; }
@@ -167,10 +182,10 @@ private:
     }
     return v;
   }
-  template <class NT> static std::vector<std::vector<std::size_t>> supports(const Polynomial_system<NT>& s)
+  template <class P> static std::vector<std::vector<std::size_t>> supports(const std::vector<P>& polynomials)
   {
     std::vector<std::vector<std::size_t>> r;
-    for (const auto& f : s.equations) r.push_back(f.variables());
+    for (const auto& f : polynomials) r.push_back(f.variables());
     return r;
   }
 

@@ -222,6 +222,25 @@ template <class IT, class NT> struct Plan_run
 
 } // namespace internal
 
+namespace internal {
+
+// Throws Input_error unless `plan` was made for `system`: as many variables, equations and
+// inequalities (a plan made without the system's inequalities would let roots that violate
+// them through).
+template <class NT>
+void check_plan(const Polynomial_system<NT>& system, const Solution_plan& plan, const char* who)
+{
+  if (plan.number_of_variables() != system.number_of_variables() || plan.number_of_equations() != system.number_of_equations())
+    throw Input_error(std::string(who) + ": the plan is for " + std::to_string(plan.number_of_equations()) + " equations in " +
+                      std::to_string(plan.number_of_variables()) + " variables, the system has " + std::to_string(system.number_of_equations()) +
+                      " in " + std::to_string(system.number_of_variables()));
+  if (plan.number_of_inequalities() != system.inequalities.size())
+    throw Input_error(std::string(who) + ": the plan is for " + std::to_string(plan.number_of_inequalities()) + " inequalities, the system has " +
+                      std::to_string(system.inequalities.size()) + " (make the plan with Solution_plan(system))");
+}
+
+} // namespace internal
+
 /*!
 \ingroup PkgRigidIncidenceSolver
 \brief Every real root of `system` in its box, solved block after block along `plan`
@@ -237,7 +256,8 @@ after it are solved once per combination of the roots before them. Each block's 
 reported with the values of the blocks before it.
 
 \tparam IT the solver's interval type (`CGAL::Interval_nt<false>` or `CGAL::Gmpfi`).
-\throws Input_error if `plan` was not made for `system` (different sizes), if the system is
+\throws Input_error if `plan` was not made for `system` (different numbers of variables, equations
+or inequalities), if the system is
 not well-constrained (the over- or under-determined part is named), or if an equation
 vanishes identically after substitution.
 */
@@ -245,10 +265,7 @@ template <class IT = CGAL::Interval_nt<false>, class NT>
 Plan_result<IT> solve_with_plan(const Polynomial_system<NT>& system, const Solution_plan& plan,
                                 const Subdivision_solver_parameters& parameters = Subdivision_solver_parameters())
 {
-  if (plan.number_of_variables() != system.number_of_variables() || plan.number_of_equations() != system.number_of_equations())
-    throw Input_error("solve_with_plan: the plan is for " + std::to_string(plan.number_of_equations()) + " equations in " +
-                      std::to_string(plan.number_of_variables()) + " variables, the system has " + std::to_string(system.number_of_equations()) +
-                      " in " + std::to_string(system.number_of_variables()));
+  internal::check_plan(system, plan, "solve_with_plan");
   if (system.box.size() != system.number_of_variables())
     throw Input_error("solve_with_plan: the box has " + std::to_string(system.box.size()) + " intervals for " +
                       std::to_string(system.number_of_variables()) + " variables");

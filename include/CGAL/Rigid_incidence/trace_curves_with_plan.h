@@ -43,6 +43,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -57,7 +58,9 @@ struct Plan_trace_parameters
   /// this many times before it becomes an unresolved region.
   unsigned maximal_halvings = 12;
   /// Each later block's solve over a piece visits at most this many boxes (a block whose roots
-  /// meet over the piece would otherwise spend the whole budget).
+  /// meet over the piece would otherwise spend the whole budget). Where the solutions above a
+  /// fold are enclosed, a solve that leaves boxes pending is repeated with a coarser minimal
+  /// width (16, 256, ... times), so that no large pending box enlarges the traced box.
   std::size_t block_boxes = 2000;
   /// A piece that still fails after the halvings (two roots of a later block meet over it: a
   /// turning point of the whole curve over block 0) is traced with `trace_curves()` on the whole
@@ -208,6 +211,14 @@ template <class IT, class NT> struct Plan_trace_run
     std::vector<I> box;     // over v0: the certified point (one coordinate crisp)
   };
 
+  // N's box in the interval type (the input of lift_box())
+  static std::vector<IT> node_box(const Node& N)
+  {
+    std::vector<IT> u;
+    for (const auto& x : N.box) u.push_back(to_it(x));
+    return u;
+  }
+
   // the variable of block 0 along which the curve runs fastest at p (the largest component of
   // the tangent, the null vector of block 0's Jacobian)
   std::size_t tangent_variable(const std::vector<double>& p) const
@@ -281,7 +292,9 @@ template <class IT, class NT> struct Plan_trace_run
   // Block b solved with its inputs the boxes of L (those with `known` set).
   // With `whole`, a chain of unknown boxes does not stop the solve (enclose(): every box counts).
   // (over the search box, or over the boxes of `within` in the block's variables)
-  Solver_result<IT> solve_block(std::size_t b, const Lift& L, const std::vector<char>& known, bool whole = false, const Lift* within = nullptr)
+  // `coarse` multiplies the minimal width below which a box is left unknown.
+  Solver_result<IT> solve_block(std::size_t b, const Lift& L, const std::vector<char>& known, bool whole = false, const Lift* within = nullptr,
+                                double coarse = 1)
   {
     const Plan_block& blk = blocks[b];
     Polynomial_system<IT> s;
@@ -302,7 +315,7 @@ template <class IT, class NT> struct Plan_trace_run
     double input = 0;
     for (std::size_t j = 0; j < n; ++j)
       if (known[j]) input = (std::max)(input, O::upper_double(L.value[j]) - O::lower_double(L.value[j]));
-    q.minimal_width = q.singular_width = (std::max)(q.minimal_width, 4 * input);
+    q.minimal_width = q.singular_width = coarse * (std::max)(q.minimal_width, 4 * input);
     Solver_result<IT> res = Subdivision_solver<IT>(q).solve(s);
     ++block_solves;
     block_boxes += res.statistics.boxes;
@@ -604,6 +617,20 @@ template <class IT, class NT> struct Plan_trace_run
     }
     if (++enclose_solves > PP.fold_leaves) return false;
     Solver_result<IT> res = solve_block(b, P, known, true);
+    // where two roots of the block meet over P (a fold) they move fast, through a thin region
+    // that boxes of the minimal width cover only beyond the block's box budget: the boxes left
+    // pending are large (on Jansen's linkage the whole 400-wide box of a point, and the blocks
+    // after it enclosed over that), so the block is solved again with boxes left unknown at 16,
+    // 256, ... times the minimal width: fewer and larger boxes, still around the fold
+    auto pending = [](const Solver_result<IT>& r) {
+      for (const auto& u : r.unresolved)
+        if (u.kind == Box_class::PENDING) return true;
+      return false;
+    };
+    for (double coarse = 16; pending(res) && coarse <= 65536; coarse *= 16) {
+      if (++enclose_solves > PP.fold_leaves) return false;
+      res = solve_block(b, P, known, true, nullptr, coarse);
+    }
     for (std::size_t j : blocks[b].variables) known[j] = 1;
     // every root of the block lies in a root's box or an unresolved box, unknown or pending
     // (the solver drops none): touching boxes are branched over as one hull (they are where two
@@ -816,12 +843,11 @@ template <class IT, class NT> struct Plan_trace_run
 // whole: one curve for each root of those blocks), then the other blocks in the plan's order.
 // An inequality of a merged block that needs a variable of a block not merged (the plan puts
 // it where its last variable is solved, which may be the curve block although a square block
-// before it is not an input) moves to the first block after which all its variables are known;
-// inequality_variables[q] lists the variables inequality q involves. plan_index, if given,
+// before it is not an input) moves to the first block after which all its variables are known.
+// plan_index, if given,
 // receives each block's index in the plan (block 0: the curve block's), for messages.
 // Throws Input_error if the plan has no curve block or a block that is not square.
-inline std::vector<Plan_block> curve_block_first(const Solution_plan& plan, const std::vector<std::vector<std::size_t>>& inequality_variables,
-                                                 std::vector<std::size_t>* plan_index = nullptr)
+inline std::vector<Plan_block> curve_block_first(const Solution_plan& plan, std::vector<std::size_t>* plan_index = nullptr)
 {
   const auto& blocks = plan.blocks();
   std::size_t c = blocks.size();
@@ -855,9 +881,8 @@ inline std::vector<Plan_block> curve_block_first(const Solution_plan& plan, cons
   std::vector<std::size_t> keep;
   for (std::size_t q : out[0].inequalities) {
     std::size_t last = 0;
-    if (q < inequality_variables.size())
-      for (std::size_t j : inequality_variables[q])
-        if (j < where.size() && where[j] != Solution_plan::none) last = (std::max)(last, where[j]);
+    for (std::size_t j : plan.inequality_variables(q))
+      if (where[j] != Solution_plan::none) last = (std::max)(last, where[j]);
     if (last == 0) keep.push_back(q);
     else {
       auto& to = out[last].inequalities;
@@ -873,15 +898,6 @@ inline std::vector<Plan_block> curve_block_first(const Solution_plan& plan, cons
   }
   if (plan_index) *plan_index = index;
   return out;
-}
-
-// The variables each inequality of the system involves.
-template <class NT>
-std::vector<std::vector<std::size_t>> inequality_supports(const Polynomial_system<NT>& s)
-{
-  std::vector<std::vector<std::size_t>> r;
-  for (const auto& g : s.inequalities) r.push_back(g.variables());
-  return r;
 }
 
 } // namespace internal
@@ -920,7 +936,8 @@ within `max_residual` of the curve. Caveat: the chain of pieces follows block 0'
 through nodes certified next to its points; that the chain is the tracer's branch (and not a
 branch within 1e-12 of it) rests on the tracer's polyline accuracy.
 
-\throws Input_error if the plan has no curve block or a block that is neither square nor the
+\throws Input_error if `plan` was not made for `system` (different numbers of variables,
+equations or inequalities), if the plan has no curve block or a block that is neither square nor the
 curve block (use `trace_curves()` on the whole system).
 */
 template <class IT = CGAL::Interval_nt<false>, class NT>
@@ -930,8 +947,9 @@ Curve_result<IT> trace_curves_with_plan(const Polynomial_system<NT>& system, con
                                         const Plan_trace_parameters& plan_parameters = Plan_trace_parameters())
 {
   const auto start = std::chrono::steady_clock::now();
+  internal::check_plan(system, plan, "trace_curves_with_plan");
   std::vector<std::size_t> plan_index;
-  const std::vector<Plan_block> blocks = internal::curve_block_first(plan, internal::inequality_supports(system), &plan_index);
+  const std::vector<Plan_block> blocks = internal::curve_block_first(plan, &plan_index);
   const std::size_t n = system.number_of_variables();
   typedef internal::Plan_trace_run<IT, NT> Run;
   typedef typename Run::Lift Lift;
@@ -1013,6 +1031,18 @@ Curve_result<IT> trace_curves_with_plan(const Polynomial_system<NT>& system, con
     // runs of consecutive failed pieces along one variable, traced whole around their folds
     // (a fold at a node between two pieces lies inside the run); the arcs go to the run's first
     // piece, first[s] is the run's first piece for every piece of it
+    // the lifts above the node where piece q starts (null: some block not resolved there),
+    // solved once: the stretch cuts and the joins below both ask
+    std::vector<char> node_lifted(P, 0);
+    std::vector<std::optional<std::vector<Lift>>> node_lifts(P);
+    auto lifts_at_node = [&](std::size_t q) -> const std::vector<Lift>* {
+      if (!node_lifted[q]) {
+        node_lifted[q] = 1;
+        std::vector<Lift> Q;
+        if (run.lift_box(Run::node_box(pieces[q].a), Q)) node_lifts[q] = std::move(Q);
+      }
+      return node_lifts[q] ? &*node_lifts[q] : nullptr;
+    };
     std::vector<std::size_t> first(P), last(P);
     for (std::size_t s = 0; s < P; ++s) first[s] = last[s] = s;
     for (std::size_t s = 0; s < P;) {
@@ -1023,12 +1053,7 @@ Curve_result<IT> trace_curves_with_plan(const Polynomial_system<NT>& system, con
              (pieces[e].b.p[t] - pieces[e].a.p[t]) * (pieces[s].b.p[t] - pieces[s].a.p[t]) > 0)
         ++e;
       // is every lift above the node where piece q starts certified (a place to cut the run)?
-      auto liftable = [&](std::size_t q) {
-        std::vector<IT> u;
-        for (const auto& x : pieces[q].a.box) u.push_back(Run::to_it(x));
-        std::vector<Lift> Q;
-        return run.lift_box(u, Q);
-      };
+      auto liftable = [&](std::size_t q) { return lifts_at_node(q) != nullptr; };
       // pieces a .. z-1 traced whole (halving a stretch that fails, down to its failing part,
       // was measured on Jansen's linkage: 628 s instead of 396 s, for the same branches)
       auto stretch = [&](std::size_t a, std::size_t z) {
@@ -1134,8 +1159,7 @@ Curve_result<IT> trace_curves_with_plan(const Polynomial_system<NT>& system, con
       const Piece &pl = pieces[L], &pr = pieces[R];
       if (!(pl.ok || pl.resolved) || !(pr.ok || pr.resolved)) continue;
       if (pl.resolved && pr.resolved && first[L] == first[R]) continue;  // inside a run
-      std::vector<IT> u;
-      for (const auto& x : pr.a.box) u.push_back(Run::to_it(x));
+      const std::vector<IT> u = Run::node_box(pr.a);
       auto not_joined = [&](const std::string& why) {
         Solver_unresolved<IT> v;
         v.reason = "lifts not joined at a node of block 0's curve: " + why;
@@ -1151,8 +1175,9 @@ Curve_result<IT> trace_curves_with_plan(const Polynomial_system<NT>& system, con
           not_joined("the lifts of the two pieces do not meet one to one");
         continue;
       }
-      std::vector<Lift> Q;
-      if (!run.lift_box(u, Q)) { not_joined("the later blocks not solved at the node"); continue; }
+      const std::vector<Lift>* lifted = lifts_at_node(R);
+      if (!lifted) { not_joined("the later blocks not solved at the node"); continue; }
+      const std::vector<Lift>& Q = *lifted;
       // the ends at this node on either side, with the root above the node each one holds
       std::vector<std::pair<std::size_t, int>> side_end[2];
       std::vector<std::size_t> side_point[2];
