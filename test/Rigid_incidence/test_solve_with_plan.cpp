@@ -181,6 +181,13 @@ int main(int argc, char** argv)
     CHECK(plan.blocks().size() == 2, "x^2 = 1/4, xy = 1/8: two blocks, got " << plan.blocks().size());
     auto r = RI::solve_with_plan(s, plan);
     CHECK(r.roots.size() == 2 && r.complete(), "x^2 = 1/4, xy = 1/8: " << r.roots.size() << " roots");
+    {  // the plan of y^2 = 1/4, xy = 1/8 (same size, y first) for this system: refused
+      RI::Polynomial_system<Q> swapped = s;
+      swapped.equations[0] = y * y - Poly::constant(2, Q(1, 4));
+      std::string what;
+      try { RI::solve_with_plan(s, RI::Solution_plan(swapped)); } catch (const RI::Input_error& e) { what = e.what(); }
+      CHECK(what.find("equation 0 involves variable 0") != std::string::npos, "a plan of another system of the same size: " << what);
+    }
     RI::Polynomial_system<Q> t = s;
     t.equations.push_back(x + y);
     t.variable_names.push_back("z");

@@ -235,7 +235,8 @@ int main(int argc, char** argv)
     pp.block_boxes = 40;
     auto r = RI::trace_curves_with_plan<IT>(s, RI::Solution_plan(s), RI::Curve_tracer_parameters(), RI::Subdivision_solver_parameters(), pp);
     std::cout << "z^2 = x y, 40 boxes per block solve: " << r.curves.size() << " curves, " << r.unresolved.size() << " unresolved, "
-              << r.statistics.fold_traces << " fold traces, " << r.statistics.boxes << " boxes\n";
+              << r.statistics.fold_traces << " fold traces, " << r.statistics.coarse_solves << " coarser block solves, " << r.statistics.boxes << " boxes\n";
+    CHECK(r.statistics.coarse_solves > 0, "small block budget: the enclosures around the folds were solved again coarser");
     CHECK(r.complete() && r.curves.size() == 2, "small block budget: complete, " << r.curves.size() << " curves");
     for (const auto& c : r.curves) {
       CHECK(c.closed && c.certified && c.max_residual < 1e-9, "small block budget: closed certified loop");

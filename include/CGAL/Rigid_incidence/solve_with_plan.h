@@ -237,6 +237,17 @@ void check_plan(const Polynomial_system<NT>& system, const Solution_plan& plan, 
   if (plan.number_of_inequalities() != system.inequalities.size())
     throw Input_error(std::string(who) + ": the plan is for " + std::to_string(plan.number_of_inequalities()) + " inequalities, the system has " +
                       std::to_string(system.inequalities.size()) + " (make the plan with Solution_plan(system))");
+  // and each polynomial involves only variables the plan knows it involves (a plan of another
+  // system of the same size would solve blocks in the wrong order, or test an inequality early)
+  auto within = [&](const std::vector<std::size_t>& used, const std::vector<std::size_t>& planned, const std::string& what) {
+    for (std::size_t j : used)
+      if (!std::binary_search(planned.begin(), planned.end(), j))
+        throw Input_error(std::string(who) + ": " + what + " involves variable " + std::to_string(j) + ", which the plan does not have it involve" +
+                          " (the plan was made for another system)");
+  };
+  for (std::size_t i = 0; i < system.equations.size(); ++i) within(system.equations[i].variables(), plan.equation_variables(i), "equation " + std::to_string(i));
+  for (std::size_t q = 0; q < system.inequalities.size(); ++q)
+    within(system.inequalities[q].variables(), plan.inequality_variables(q), "inequality " + std::to_string(q));
 }
 
 } // namespace internal

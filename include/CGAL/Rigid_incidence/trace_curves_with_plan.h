@@ -59,8 +59,9 @@ struct Plan_trace_parameters
   unsigned maximal_halvings = 12;
   /// Each later block's solve over a piece visits at most this many boxes (a block whose roots
   /// meet over the piece would otherwise spend the whole budget). Where the solutions above a
-  /// fold are enclosed, a solve that leaves boxes pending is repeated with a coarser minimal
-  /// width (16, 256, ... times), so that no large pending box enlarges the traced box.
+  /// fold are enclosed, a solve that runs out of boxes is repeated with a coarser minimal width
+  /// (16, 256, 4096, 65536 times), so that its large pending boxes do not enlarge the box traced
+  /// around the fold.
   std::size_t block_boxes = 2000;
   /// A piece that still fails after the halvings (two roots of a later block meet over it: a
   /// turning point of the whole curve over block 0) is traced with `trace_curves()` on the whole
@@ -315,7 +316,10 @@ template <class IT, class NT> struct Plan_trace_run
     double input = 0;
     for (std::size_t j = 0; j < n; ++j)
       if (known[j]) input = (std::max)(input, O::upper_double(L.value[j]) - O::lower_double(L.value[j]));
-    q.minimal_width = q.singular_width = coarse * (std::max)(q.minimal_width, 4 * input);
+    double width = (std::max)(q.minimal_width, 4 * input);
+    if (width == 0 && coarse > 1)  // crisp inputs and the solver's own default: coarser than that
+      for (const auto& b : s.box) width = (std::max)(width, 1e-9 * (b.second - b.first));
+    q.minimal_width = q.singular_width = coarse * width;
     Solver_result<IT> res = Subdivision_solver<IT>(q).solve(s);
     ++block_solves;
     block_boxes += res.statistics.boxes;
@@ -573,7 +577,7 @@ template <class IT, class NT> struct Plan_trace_run
 
   // ---------------------------------------------------------------- folds
 
-  std::size_t fold_traces = 0, fold_trace_boxes = 0, enclose_solves = 0;
+  std::size_t fold_traces = 0, fold_trace_boxes = 0, enclose_solves = 0, coarse_solves = 0;
 
   // Replaces boxes that meet (directly or through others) by their hulls, until no two meet:
   // passes of union-find over all pairs, since a hull may meet boxes its parts did not.
@@ -621,14 +625,17 @@ template <class IT, class NT> struct Plan_trace_run
     // that boxes of the minimal width cover only beyond the block's box budget: the boxes left
     // pending are large (on Jansen's linkage the whole 400-wide box of a point, and the blocks
     // after it enclosed over that), so the block is solved again with boxes left unknown at 16,
-    // 256, ... times the minimal width: fewer and larger boxes, still around the fold
-    auto pending = [](const Solver_result<IT>& r) {
+    // 256, 4096 and 65536 times the minimal width, until none is left pending by the box budget:
+    // fewer and larger boxes, still around the fold (each solve counts against fold_leaves; what
+    // is still pending after the last is branched over like any unresolved box)
+    auto out_of_boxes = [](const Solver_result<IT>& r) {
       for (const auto& u : r.unresolved)
-        if (u.kind == Box_class::PENDING) return true;
+        if (u.kind == Box_class::PENDING && u.reason.find("box budget") != std::string::npos) return true;
       return false;
     };
-    for (double coarse = 16; pending(res) && coarse <= 65536; coarse *= 16) {
+    for (double coarse = 16; out_of_boxes(res) && coarse <= 65536; coarse *= 16) {
       if (++enclose_solves > PP.fold_leaves) return false;
+      ++coarse_solves;
       res = solve_block(b, P, known, true, nullptr, coarse);
     }
     for (std::size_t j : blocks[b].variables) known[j] = 1;
@@ -1304,6 +1311,7 @@ Curve_result<IT> trace_curves_with_plan(const Polynomial_system<NT>& system, con
   out.statistics.block_solves = run.block_solves;
   out.statistics.pieces = run.pieces;
   out.statistics.fold_traces = run.fold_traces;
+  out.statistics.coarse_solves = run.coarse_solves;
   out.statistics.boxes += run.fold_trace_boxes;
   out.statistics.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
