@@ -245,6 +245,46 @@ int main(int argc, char** argv)
       CHECK(zmin < -0.7 && zmax > 0.7, "small block budget: a loop passes through both signs of z");
     }
   }
+  {  // a fold of one branch next to a branch that does not fold there: u = +-sqrt(4 + x + y),
+     // then z = +-sqrt((u - 1.9) y) (the plan: the circle, u, z). Branch u > 0 folds where y = 0
+     // and where u = 1.9 (x + y = -0.39); at the one with y < 0 (angle about -61 degrees) branch
+     // u < 0 has its two z apart, so over that run its clusters are lifted from their certified
+     // enclosures (lifted_arcs), not traced
+    auto s = system_of("3 4\nx^2 + y^2 - 1;\nu^2 - x - y - 4;\nz^2 - (u - 1.9)*y;\nbox * -3 3\n");
+    CHECK(RI::Solution_plan(s).blocks().size() == 3 && RI::Solution_plan(s).blocks()[0].variables == std::vector<std::size_t>({0, 1}),
+          "fold next to a regular branch: the plan is the circle, then u, then z");
+    auto r = RI::trace_curves_with_plan<IT>(s, RI::Solution_plan(s));
+    std::cout << "a fold next to a branch without one: " << r.curves.size() << " curves, " << r.unresolved.size() << " unresolved, "
+              << r.statistics.fold_traces << " fold traces, " << r.statistics.lifted_arcs << " arcs lifted\n";
+    CHECK(r.complete() && !r.curves.empty(), "fold next to a regular branch: complete, " << r.curves.size() << " curves");
+    CHECK(r.statistics.lifted_arcs > 0, "fold next to a regular branch: some arcs lifted, not traced");
+    for (const auto& c : r.curves) CHECK(c.closed && c.certified && c.max_residual < 1e-9, "fold next to a regular branch: closed certified loop");
+    for (int k = 0; k < 720; ++k) {
+      const double th = 2 * CGAL_PI * (k + 0.29) / 720, x = std::cos(th), y = std::sin(th);
+      std::size_t expected = 0;
+      for (int su = -1; su <= 1; su += 2) {
+        const double u = su * std::sqrt(4 + x + y), w = (u - 1.9) * y;
+        if (w < 0) continue;
+        for (int sz = -1; sz <= 1; sz += 2) {
+          ++expected;
+          const std::vector<double> p{x, y, u, sz * std::sqrt(w)};
+          double best = 1e300;
+          for (const auto& c : r.curves)
+            for (std::size_t i = 0; i + 1 < c.points.size(); ++i) best = (std::min)(best, dist_to_segment(p, c.points[i], c.points[i + 1]));
+          CHECK(best < 0.05, "fold next to a regular branch: the closed form at angle " << th << " is " << best << " away");
+        }
+      }
+      std::size_t crossings = 0;
+      for (const auto& c : r.curves)
+        for (std::size_t i = 0; i < c.points.size(); ++i) {
+          const auto& p = c.points[i];
+          const auto& q = c.points[(i + 1) % c.points.size()];
+          const double d0 = std::remainder(std::atan2(p[1], p[0]) - th, 2 * CGAL_PI), d1 = std::remainder(std::atan2(q[1], q[0]) - th, 2 * CGAL_PI);
+          if (std::abs(d0 - d1) < 1 && ((d0 < 0) != (d1 < 0))) ++crossings;
+        }
+      CHECK(crossings == expected, "fold next to a regular branch: at angle " << th << " " << crossings << " crossings, " << expected << " points");
+    }
+  }
   {  // the same folds, not traced whole (fold_boxes = 0): each run of failed pieces is one
      // region, and every chain that stops at one names it (end_region) with its end inside
     auto s = system_of("2 3\nx^2 + y^2 - 1;\nz^2 - x*y;\nbox * -3 3\n");

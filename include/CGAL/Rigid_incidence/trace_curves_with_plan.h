@@ -577,7 +577,10 @@ template <class IT, class NT> struct Plan_trace_run
 
   // ---------------------------------------------------------------- folds
 
-  std::size_t fold_traces = 0, fold_trace_boxes = 0, enclose_solves = 0, coarse_solves = 0;
+  std::size_t fold_traces = 0, fold_trace_boxes = 0, enclose_solves = 0, coarse_solves = 0, lifted_arcs = 0;
+  std::vector<std::size_t> leaf_piece;  // per leaf of enclose(): the piece (index in X0s) it lies above
+  std::vector<char> leaf_certified;     // per leaf: made of certified roots only, none merged
+  std::size_t current_piece = 0;
 
   // Replaces boxes that meet (directly or through others) by their hulls, until no two meet:
   // passes of union-find over all pairs, since a hull may meet boxes its parts did not.
@@ -612,11 +615,14 @@ template <class IT, class NT> struct Plan_trace_run
   // values: block b and the ones after it solved over the boxes of P, branching over each
   // root's box and each hull of touching unresolved boxes. False if there would be more than
   // `fold_leaves` leaves, or block solves since enclose_solves was last reset (branches that
-  // die cost a solve each, too).
-  bool enclose(std::size_t b, const Lift& P, std::vector<char> known, std::vector<std::vector<IT>>& leaves)
+  // die cost a solve each, too). Each leaf's piece (current_piece) and whether it is made of
+  // certified roots only go to leaf_piece and leaf_certified.
+  bool enclose(std::size_t b, const Lift& P, std::vector<char> known, std::vector<std::vector<IT>>& leaves, bool certified = true)
   {
     if (b >= blocks.size()) {
       leaves.push_back(P.value);
+      leaf_piece.push_back(current_piece);
+      leaf_certified.push_back(certified);
       return leaves.size() <= PP.fold_leaves;
     }
     if (++enclose_solves > PP.fold_leaves) return false;
@@ -643,13 +649,19 @@ template <class IT, class NT> struct Plan_trace_run
     // (the solver drops none): touching boxes are branched over as one hull (they are where two
     // roots meet, the fold), so that a chain of unresolved boxes costs one branch, not one each
     std::vector<std::vector<IT>> parts;
-    for (const auto& r : res.roots) parts.push_back(r.enclosure);
+    bool roots_only = res.unresolved.empty();
+    for (const auto& r : res.roots) {
+      parts.push_back(r.enclosure);
+      roots_only = roots_only && r.certified;
+    }
     for (const auto& u : res.unresolved) parts.push_back(u.box);
+    const std::size_t unmerged = parts.size();
     merge_touching(parts);
+    roots_only = roots_only && parts.size() == unmerged;  // no two roots' boxes became one
     for (const auto& part : parts) {
       Lift M = P;
       for (std::size_t k = 0; k < blocks[b].variables.size(); ++k) M.value[blocks[b].variables[k]] = part[k];
-      if (!enclose(b + 1, M, known, leaves)) return false;
+      if (!enclose(b + 1, M, known, leaves, certified && roots_only)) return false;
     }
     return true;
   }
@@ -695,14 +707,18 @@ template <class IT, class NT> struct Plan_trace_run
   // boundary or at an inequality; an arc ending anywhere else, or any unresolved region (a
   // singular point of the whole curve, an arc not certified, a budget) leaves the piece
   // unresolved. At most PP.fold_boxes boxes for the whole run.
-  bool trace_fold(const Node& a, const Node& b, std::size_t t, const std::vector<std::vector<I>>& X0s, const Curve_tracer_parameters& tracer,
-                  std::vector<Arc>& arcs, std::string& why)
+  // `nodes`: the run's nodes in order (a, the nodes between its pieces, b).
+  bool trace_fold(const Node& a, const Node& b, std::size_t t, const std::vector<std::vector<I>>& X0s, const std::vector<const Node*>& nodes,
+                  const Curve_tracer_parameters& tracer, std::vector<Arc>& arcs, std::string& why)
   {
+    leaf_piece.clear();
+    leaf_certified.clear();
     arcs.clear();
     if (PP.fold_boxes == 0 || X0s.empty()) return false;
     std::vector<I> X0 = X0s.front();
     std::vector<std::vector<IT>> leaves;
     for (const auto& X : X0s) {
+      current_piece = std::size_t(&X - X0s.data());
       enclose_solves = 0;  // at most fold_leaves block solves for each piece
       Lift S;
       S.value.assign(n, IT(0));
@@ -733,6 +749,11 @@ template <class IT, class NT> struct Plan_trace_run
     std::size_t budget = (std::min)(q.maximal_boxes, PP.fold_boxes);
     const double d = 4 * (std::max)(q.tolerance, 1e-14);
     for (const auto& cluster : clusters) {
+      Arc lifted;
+      if (lift_cluster(cluster, leaves, X0s.size(), nodes, lifted)) {
+        arcs.push_back(std::move(lifted));
+        continue;
+      }
       if (budget == 0) { why += "; traced around it: box budget exhausted"; return false; }
       q.maximal_boxes = budget;
       Polynomial_system<NT> h = sys;
@@ -776,6 +797,46 @@ template <class IT, class NT> struct Plan_trace_run
         arcs.push_back(std::move(A));
       }
     }
+    return true;
+  }
+
+  // A cluster (over the later variables) that holds one leaf of enclose() above each of the
+  // run's `pieces` pieces, each made of certified roots only, and no other leaf, holds exactly one
+  // solution above every point of block 0's curve over the run (each leaf holds one per input,
+  // enclose() holds them all, and the clusters are disjoint), continuous: one arc from the run's
+  // first node to its last, without tracing (on Jansen's linkage most clusters of a run, the
+  // branches that do not fold there). Its points: the nodes, the later variables by Newton inside
+  // the leaves. False if the cluster is not of that kind, or Newton leaves a leaf.
+  bool lift_cluster(const std::vector<IT>& cluster, const std::vector<std::vector<IT>>& leaves, std::size_t pieces,
+                    const std::vector<const Node*>& nodes, Arc& A)
+  {
+    if (nodes.size() != pieces + 1 || pieces == 0) return false;
+    std::vector<std::size_t> mine(pieces, leaves.size());
+    for (std::size_t l = 0; l < leaves.size(); ++l) {
+      bool in = true;
+      for (std::size_t j = 0; j < down.size() && in; ++j) in = meet(leaves[l][down[j]], cluster[j]);
+      if (!in) continue;
+      if (!leaf_certified[l] || mine[leaf_piece[l]] != leaves.size()) return false;
+      mine[leaf_piece[l]] = l;
+    }
+    for (std::size_t k = 0; k < pieces; ++k)
+      if (mine[k] == leaves.size()) return false;
+    A = Arc();
+    A.curve.ends[0] = A.curve.ends[1] = Curve_end::BOUNDARY;
+    A.node[0] = 0;
+    A.node[1] = 1;
+    for (std::size_t k = 0; k <= pieces; ++k) {
+      const std::vector<IT>& L = leaves[mine[(std::min)(k, pieces - 1)]];  // node k lies in piece k's X0 (the last: in the last piece's)
+      std::vector<double> x(n, 0.0);
+      for (std::size_t q = 0; q < v0.size(); ++q) x[v0[q]] = nodes[k]->p[q];
+      for (std::size_t j : down) x[j] = mid(L[j]);
+      if (!newton(down_eq, down, x)) return false;
+      for (std::size_t j : down)
+        if (x[j] < O::lower_double(L[j]) || x[j] > O::upper_double(L[j])) return false;
+      A.curve.points.push_back(x);
+    }
+    for (std::size_t k = 0; k < pieces; ++k) A.curve.boxes.push_back(leaves[mine[k]]);  // the arc lies in their union
+    ++lifted_arcs;
     return true;
   }
 
@@ -1067,7 +1128,9 @@ Curve_result<IT> trace_curves_with_plan(const Polynomial_system<NT>& system, con
         std::vector<std::vector<typename Run::I>> X0s;
         for (std::size_t q = a; q < z; ++q) X0s.push_back(pieces[q].X0);
         std::string why;
-        if (run.trace_fold(pieces[a].a, pieces[z - 1].b, t, X0s, tracer, pieces[a].arcs, why)) {
+        std::vector<const Node*> nodes{&pieces[a].a};
+        for (std::size_t q = a; q < z; ++q) nodes.push_back(&pieces[q].b);
+        if (run.trace_fold(pieces[a].a, pieces[z - 1].b, t, X0s, nodes, tracer, pieces[a].arcs, why)) {
           for (std::size_t q = a; q < z; ++q) {
             pieces[q].resolved = true;
             first[q] = a;
@@ -1312,6 +1375,7 @@ Curve_result<IT> trace_curves_with_plan(const Polynomial_system<NT>& system, con
   out.statistics.pieces = run.pieces;
   out.statistics.fold_traces = run.fold_traces;
   out.statistics.coarse_solves = run.coarse_solves;
+  out.statistics.lifted_arcs = run.lifted_arcs;
   out.statistics.boxes += run.fold_trace_boxes;
   out.statistics.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
