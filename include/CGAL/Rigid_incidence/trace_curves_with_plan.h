@@ -707,14 +707,15 @@ template <class IT, class NT> struct Plan_trace_run
   // boundary or at an inequality; an arc ending anywhere else, or any unresolved region (a
   // singular point of the whole curve, an arc not certified, a budget) leaves the piece
   // unresolved. At most PP.fold_boxes boxes for the whole run.
-  // `nodes`: the run's nodes in order (a, the nodes between its pieces, b).
-  bool trace_fold(const Node& a, const Node& b, std::size_t t, const std::vector<std::vector<I>>& X0s, const std::vector<const Node*>& nodes,
+  // `nodes`: the run's nodes in order (a, the nodes between its pieces, b: one more than X0s).
+  bool trace_fold(const std::vector<const Node*>& nodes, std::size_t t, const std::vector<std::vector<I>>& X0s,
                   const Curve_tracer_parameters& tracer, std::vector<Arc>& arcs, std::string& why)
   {
     leaf_piece.clear();
     leaf_certified.clear();
     arcs.clear();
     if (PP.fold_boxes == 0 || X0s.empty()) return false;
+    const Node &a = *nodes.front(), &b = *nodes.back();
     std::vector<I> X0 = X0s.front();
     std::vector<std::vector<IT>> leaves;
     for (const auto& X : X0s) {
@@ -750,7 +751,7 @@ template <class IT, class NT> struct Plan_trace_run
     const double d = 4 * (std::max)(q.tolerance, 1e-14);
     for (const auto& cluster : clusters) {
       Arc lifted;
-      if (lift_cluster(cluster, leaves, X0s.size(), nodes, lifted)) {
+      if (lift_cluster(cluster, leaves, nodes, lifted)) {
         arcs.push_back(std::move(lifted));
         continue;
       }
@@ -801,16 +802,15 @@ template <class IT, class NT> struct Plan_trace_run
   }
 
   // A cluster (over the later variables) that holds one leaf of enclose() above each of the
-  // run's `pieces` pieces, each made of certified roots only, and no other leaf, holds exactly one
+  // run's pieces (one fewer than its nodes), each of certified roots only, and no other leaf, holds exactly one
   // solution above every point of block 0's curve over the run (each leaf holds one per input,
   // enclose() holds them all, and the clusters are disjoint), continuous: one arc from the run's
   // first node to its last, without tracing (on Jansen's linkage most clusters of a run, the
   // branches that do not fold there). Its points: the nodes, the later variables by Newton inside
   // the leaves. False if the cluster is not of that kind, or Newton leaves a leaf.
-  bool lift_cluster(const std::vector<IT>& cluster, const std::vector<std::vector<IT>>& leaves, std::size_t pieces,
-                    const std::vector<const Node*>& nodes, Arc& A)
+  bool lift_cluster(const std::vector<IT>& cluster, const std::vector<std::vector<IT>>& leaves, const std::vector<const Node*>& nodes, Arc& A)
   {
-    if (nodes.size() != pieces + 1 || pieces == 0) return false;
+    const std::size_t pieces = nodes.size() - 1;
     std::vector<std::size_t> mine(pieces, leaves.size());
     for (std::size_t l = 0; l < leaves.size(); ++l) {
       bool in = true;
@@ -1130,7 +1130,7 @@ Curve_result<IT> trace_curves_with_plan(const Polynomial_system<NT>& system, con
         std::string why;
         std::vector<const Node*> nodes{&pieces[a].a};
         for (std::size_t q = a; q < z; ++q) nodes.push_back(&pieces[q].b);
-        if (run.trace_fold(pieces[a].a, pieces[z - 1].b, t, X0s, nodes, tracer, pieces[a].arcs, why)) {
+        if (run.trace_fold(nodes, t, X0s, tracer, pieces[a].arcs, why)) {
           for (std::size_t q = a; q < z; ++q) {
             pieces[q].resolved = true;
             first[q] = a;
