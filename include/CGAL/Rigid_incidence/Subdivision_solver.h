@@ -516,7 +516,11 @@ private:
         rel = (std::max)(rel, w / initial_width[j]);
         if (w > min_width) small = false;
       }
-      if (converging || rel <= 1.0 / 16 || small) {
+      // without the preconditioned clipping (a system too large for its dense arrays) nothing
+      // converges, and a box 1/16 as wide in each of n variables is 16^-n of the volume: so
+      // the test (behind its cheap Newton gate) is tried on every box; a face system of the
+      // curve tracer in 11 variables then takes a box or two instead of thousands
+      if (converging || rel <= 1.0 / 16 || small || !precondition) {
         last_contraction = 0;
         bool below = true;
         for (std::size_t j = 0; j < n && below; ++j) below = width(x, j) <= singular_width;
