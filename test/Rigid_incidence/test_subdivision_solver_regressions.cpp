@@ -11,7 +11,11 @@
 //    without domain reduction: the Krawczyk exclusion must end the boxes along the roots'
 //    near-null directions (complete, 9 roots, the same as with domain reduction, few boxes);
 //  - an equation in many variables (its dense array too large to allocate): refused with an
-//    Input_error naming it, at the exact limit counted by hand (maximal_coefficients).
+//    Input_error naming it, at the exact limit counted by hand (maximal_coefficients);
+//  - a planted system in 11 variables (too many for the dense preconditioned arrays) on a small
+//    box around its root, and on one beside it: the Krawczyk test must be tried at once, not
+//    after halving every variable 4 times (the curve tracer's face systems around a fold of
+//    Jansen's linkage took thousands of boxes each).
 
 #include "test_check.h"
 
@@ -159,9 +163,43 @@ static void storage_limit()
   CHECK(!traced(62), "the circle refused with maximal_coefficients = 62");
 }
 
+// x_i^2 + x_{i+1} + x_{i+2} = r_i^2 + r_{i+1} + r_{i+2} (indices mod 11), planted root
+// r_i = (i + 20) / 40, on boxes 2e-3 wide: around the root (one root, certified), and shifted by
+// 1e-2 (none). Each equation bounds a variable by the sum of two others' widths divided by
+// 2 r_i <= 1.5, so the clipping of the equations themselves does not shrink the box.
+static void many_variables()
+{
+  typedef RI::Sparse_polynomial<Q> P;
+  const std::size_t n = 11;
+  std::vector<Q> r;
+  for (std::size_t i = 0; i < n; ++i) r.push_back(Q(int(i) + 20) / Q(40));
+  RI::Polynomial_system<Q> s;
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t k = (i + 1) % n, l = (i + 2) % n;
+    s.variable_names.push_back("x" + std::to_string(i));
+    s.equations.push_back(P::variable(n, i) * P::variable(n, i) + P::variable(n, k) + P::variable(n, l) - P::constant(n, r[i] * r[i] + r[k] + r[l]));
+  }
+  for (double shift : {0.0, 1e-2}) {
+    s.box.clear();
+    for (std::size_t i = 0; i < n; ++i) s.box.push_back({CGAL::to_double(r[i]) + shift - 1e-3, CGAL::to_double(r[i]) + shift + 1e-3});
+    RI::Solver_result<I> res = RI::Subdivision_solver<I>().solve(s);
+    const std::string what = shift == 0 ? "11 variables, around the root: " : "11 variables, beside the root: ";
+    CHECK(res.complete() && res.roots.size() == (shift == 0 ? 1u : 0u), what << res.roots.size() << " roots, complete " << res.complete());
+    if (shift == 0 && res.roots.size() == 1) {
+      CHECK(res.roots[0].certified, what << "certified");
+      for (std::size_t i = 0; i < n; ++i)
+        CHECK(res.roots[0].enclosure[i].inf() <= CGAL::to_double(r[i]) + 1e-15 && res.roots[0].enclosure[i].sup() >= CGAL::to_double(r[i]) - 1e-15,
+              what << "x" << i << " encloses " << CGAL::to_double(r[i]));
+    }
+    // (halving all 11 variables until each is 1/16 of the box: a box is 16^-11 of the volume)
+    CHECK(res.statistics.boxes <= 8, what << res.statistics.boxes << " boxes (at most 8)");
+  }
+}
+
 int main()
 {
   storage_limit();
+  many_variables();
   {
     std::vector<Q> p = mignotte(6, 100);
     RI::Solver_result<I> r = RI::Subdivision_solver<I>().solve(univariate<I>(p, -1, 1));

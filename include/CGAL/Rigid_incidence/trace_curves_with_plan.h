@@ -14,7 +14,9 @@
 // intervals whose widths grow with every block) proves, for each root found at X0's centre, one
 // root in a box X for every input in X0: a lift, single-valued and continuous over the piece.
 // Each later block is then solved again over the lifts' boxes with interval coefficients, to
-// prove that these are all its roots there. Lifts of consecutive pieces are joined where their
+// prove that these are all its roots there (so the roots at the centre may be continued by
+// Newton from the lifts of the piece before instead of solved; where that misses one, they are
+// solved). Lifts of consecutive pieces are joined where their
 // boxes meet (a bijection is required: both sets hold every root above the shared node, each
 // one unique in its box). A piece that fails is halved, down to `maximal_halvings` levels. A
 // run of pieces that still fail (two roots of a later block meet there: a fold, where the whole
@@ -119,8 +121,8 @@ template <class IT, class NT> struct Plan_trace_run
   static double mid(const IT& x) { return 0.5 * O::lower_double(x) + 0.5 * O::upper_double(x); }
 
   // Newton on the equations E for the unknowns Y (the other variables of x fixed); false if
-  // it does not converge.
-  bool newton(const std::vector<std::size_t>& E, const std::vector<std::size_t>& Y, std::vector<double>& x) const
+  // it does not converge (to steps of at most `tolerance` times the largest unknown).
+  bool newton(const std::vector<std::size_t>& E, const std::vector<std::size_t>& Y, std::vector<double>& x, double tolerance = 1e-15) const
   {
     const std::size_t m = Y.size();
     for (int it = 0; it < 30; ++it) {
@@ -134,7 +136,7 @@ template <class IT, class NT> struct Plan_trace_run
       if (!d.allFinite()) return false;
       double big = 1;
       for (std::size_t k = 0; k < m; ++k) { x[Y[k]] -= d(long(k)); big = (std::max)(big, std::abs(x[Y[k]])); }
-      if (d.lpNorm<Eigen::Infinity>() <= 1e-15 * big) return true;
+      if (d.lpNorm<Eigen::Infinity>() <= tolerance * big) return true;
     }
     return false;
   }
@@ -395,14 +397,89 @@ template <class IT, class NT> struct Plan_trace_run
     return true;
   }
 
+  // The roots of the later blocks above block 0's point u, by Newton from the lifts `from` of
+  // the piece before (their boxes' centres): as lift_point() gives them (the same order, paths
+  // and inequality flags: in the search box, the inequalities not certainly violated at the
+  // point), but not proved to be all of them, nor distinct.
+  void centre_by_newton(const std::vector<double>& u, const std::vector<Lift>& from, std::vector<Lift>& out) const
+  {
+    out.clear();
+    std::vector<std::vector<double>> xs;
+    for (const Lift& h : from) {
+      std::vector<double> x(n, 0.0);
+      for (std::size_t k = 0; k < v0.size(); ++k) x[v0[k]] = u[k];
+      for (std::size_t j : down) x[j] = mid(h.value[j]);
+      if (!newton(down_eq, down, x, 1e-12)) continue;  // its root may have left (a fold): the completeness test tells
+      bool keep = true;
+      for (std::size_t j : down) keep = keep && x[j] >= sys.box[j].first && x[j] <= sys.box[j].second;
+      if (keep) xs.push_back(x);
+    }
+    CGAL::Protect_FPU_rounding<true> guard;
+    std::vector<Lift> lifts;
+    for (const auto& x : xs) {
+      Lift L;
+      L.value.assign(n, IT(0));
+      for (std::size_t j = 0; j < n; ++j) L.value[j] = to_it(I(x[j]));
+      std::vector<I> xi(x.begin(), x.end());
+      bool keep = true;
+      for (std::size_t b = 1; b < blocks.size() && keep; ++b)
+        for (std::size_t q : blocks[b].inequalities) {
+          const I v = sys.inequalities[q].template evaluate<I>(xi);
+          if (v.sup() < 0) keep = false;
+          else if (!(v.inf() >= 0)) L.inequality_boundary = true;
+        }
+      if (keep) lifts.push_back(L);
+    }
+    // the paths: per block, the index of its root among the distinct ones after the same
+    // earlier roots, in the solver's order (by value)
+    for (auto& L : lifts) L.path.assign(blocks.size() - 1, 0);
+    auto same = [&](const Lift& a, const Lift& c, std::size_t b) {
+      for (std::size_t j : blocks[b].variables) {
+        const double x = mid(a.value[j]), y = mid(c.value[j]);
+        if (std::abs(x - y) > 1e-9 * (1 + std::abs(x) + std::abs(y))) return false;
+      }
+      return true;
+    };
+    for (std::size_t b = 1; b < blocks.size(); ++b) {
+      std::vector<char> done(lifts.size(), 0);
+      for (std::size_t g = 0; g < lifts.size(); ++g) {
+        if (done[g]) continue;
+        std::vector<std::size_t> group;  // the lifts with g's earlier roots
+        for (std::size_t m = g; m < lifts.size(); ++m)
+          if (std::equal(lifts[m].path.begin(), lifts[m].path.begin() + (b - 1), lifts[g].path.begin())) { group.push_back(m); done[m] = 1; }
+        std::vector<std::size_t> roots;  // one member per distinct root of block b
+        for (std::size_t m : group) {
+          bool fresh = true;
+          for (std::size_t r : roots) fresh = fresh && !same(lifts[m], lifts[r], b);
+          if (fresh) roots.push_back(m);
+        }
+        auto value = [&](std::size_t m) {
+          std::vector<double> v;
+          for (std::size_t j : blocks[b].variables) v.push_back(mid(lifts[m].value[j]));
+          return v;
+        };
+        std::sort(roots.begin(), roots.end(), [&](std::size_t p, std::size_t q) { return value(p) < value(q); });
+        for (std::size_t m : group)
+          for (std::size_t r = 0; r < roots.size(); ++r)
+            if (same(lifts[m], lifts[roots[r]], b)) { lifts[m].path[b - 1] = r; break; }
+      }
+    }
+    std::stable_sort(lifts.begin(), lifts.end(), [](const Lift& a, const Lift& c) { return a.path < c.path; });
+    out.swap(lifts);
+  }
+
   // The lifts over the box X0 of a piece of block 0's curve; false (with `why`) if they
-  // cannot all be certified there.
-  bool lift_piece(const std::vector<I>& X0, std::vector<Lift>& out, std::string& why)
+  // cannot all be certified there. With `hint` (the lifts of the piece before), the roots
+  // above X0's centre are continued from those by Newton instead of solved (about half the
+  // block solves of a piece): the completeness test below then proves that they are all.
+  bool lift_piece(const std::vector<I>& X0, std::vector<Lift>& out, std::string& why, const std::vector<Lift>* hint = nullptr)
   {
     std::vector<double> uc(v0.size());
     for (std::size_t k = 0; k < v0.size(); ++k) uc[k] = 0.5 * X0[k].inf() + 0.5 * X0[k].sup();
     std::vector<Lift> centre;
-    if (!lift_point(uc, centre)) { why = "a later block is not resolved above the piece's centre"; return false; }
+    if (hint)
+      centre_by_newton(uc, *hint, centre);
+    else if (!lift_point(uc, centre)) { why = "a later block is not resolved above the piece's centre"; return false; }
     out.clear();
     for (const Lift& c : centre) {
       std::vector<double> x(n, 0.0);
@@ -896,6 +973,8 @@ template <class IT, class NT> struct Plan_trace_run
     std::vector<Arc> arcs;
   };
 
+  static bool same_node(const Node& x, const Node& y) { return x.p == y.p; }
+
   // block 0's curve from node a to node b, halved where it cannot be lifted
   void pieces_between(const Node& a, const Node& b, unsigned depth, std::vector<Piece>& out)
   {
@@ -904,7 +983,24 @@ template <class IT, class NT> struct Plan_trace_run
     P.b = b;
     ++pieces;
     if (!piece_box(a, b, P.X0)) { P.why = "block 0's curve not certified between two of its points"; P.X0.clear(); }
-    else P.ok = lift_piece(P.X0, P.lifts, P.why);
+    else {
+      // first from the lifts of the piece before (it ends where this one starts), then, if
+      // that fails for a reason that the roots at the centre may change (a root missed or
+      // found twice by Newton; not a lift that is not unique over the piece or a block not
+      // resolved over it), from the roots solved at the centre
+      const Piece* before = out.empty() ? nullptr : &out.back();
+      if (before && before->ok && !before->lifts.empty() && same_node(before->b, a)) {
+        P.ok = lift_piece(P.X0, P.lifts, P.why, &before->lifts);
+        bool retry = false;
+        for (const char* w : {"do not account for", "root not found", "overlap", "no lift at the piece's centre", "meets several"})
+          retry = retry || P.why.find(w) != std::string::npos;
+        if (!P.ok && retry) {
+          P.why.clear();
+          P.ok = lift_piece(P.X0, P.lifts, P.why);
+        }
+      } else
+        P.ok = lift_piece(P.X0, P.lifts, P.why);
+    }
     if (P.ok || depth >= PP.maximal_halvings) { out.push_back(std::move(P)); return; }
     // halve: the node at the middle value of the piece's fastest variable
     const std::size_t t = piece_variable(a, b);
