@@ -91,7 +91,15 @@ template <class IT, class NT> struct Plan_trace_run
   const Plan_trace_parameters& PP;
   const std::size_t n;
   std::vector<std::size_t> v0, e0, down, down_eq;  // block 0's variables and equations, the later ones
-  std::vector<std::vector<Sparse_polynomial<NT>>> D;  // D[i][j]: d f_i / d x_j
+  // the equations, inequalities and derivatives with their coefficients converted once (an
+  // exact coefficient costs a conversion through MPFR at every evaluation otherwise): in double
+  // for Newton and the preconditioners, enclosed in I for the Krawczyk tests and in IT for
+  // the block solves
+  std::vector<Sparse_polynomial<double>> Fd;
+  std::vector<std::vector<Sparse_polynomial<double>>> Dd;  // Dd[i][j]: d f_i / d x_j
+  std::vector<Sparse_polynomial<I>> FI, GI;
+  std::vector<std::vector<Sparse_polynomial<I>>> DI;
+  std::vector<Sparse_polynomial<IT>> FIT, GIT;
   std::vector<std::vector<char>> uses;               // uses[i][j]: f_i involves x_j
   std::size_t block_solves = 0, block_boxes = 0, pieces = 0, halvings = 0;
   std::vector<std::size_t> plan_index;  // each block's index in the plan, for messages
@@ -107,13 +115,36 @@ template <class IT, class NT> struct Plan_trace_run
       down.insert(down.end(), blocks[b].variables.begin(), blocks[b].variables.end());
       down_eq.insert(down_eq.end(), blocks[b].equations.begin(), blocks[b].equations.end());
     }
-    D.resize(sys.equations.size());
     uses.resize(sys.equations.size());
     for (std::size_t i = 0; i < sys.equations.size(); ++i) {
       uses[i].assign(n, 0);
       for (std::size_t j : sys.equations[i].variables()) uses[i][j] = 1;
-      for (std::size_t j = 0; j < n; ++j) D[i].push_back(sys.equations[i].derivative(j));
+      Fd.push_back(converted<double>(sys.equations[i]));
+      FI.push_back(converted<I>(sys.equations[i]));
+      FIT.push_back(converted<IT>(sys.equations[i]));
+      Dd.emplace_back();
+      DI.emplace_back();
+      for (std::size_t j = 0; j < n; ++j) {
+        const Sparse_polynomial<NT> d = sys.equations[i].derivative(j);  // d f_i / d x_j
+        Dd.back().push_back(converted<double>(d));
+        DI.back().push_back(converted<I>(d));
+      }
     }
+    for (const auto& g : sys.inequalities) {
+      GI.push_back(converted<I>(g));
+      GIT.push_back(converted<IT>(g));
+    }
+  }
+
+  // f with its coefficients in T: rounded to double, or enclosed in an interval
+  template <class T> static Sparse_polynomial<T> converted(const Sparse_polynomial<NT>& f)
+  {
+    Sparse_polynomial<T> r(f.number_of_variables());
+    for (const auto& t : f.terms()) {
+      if constexpr (std::is_same<T, double>::value) r.add_term(t.first, CGAL::to_double(t.second));
+      else r.add_term(t.first, Interval_ops<T>::from(t.second));
+    }
+    return r;
   }
 
   IT search(std::size_t j) const { return O::make(O::bound_from_double(sys.box[j].first), O::bound_from_double(sys.box[j].second)); }
@@ -129,8 +160,8 @@ template <class IT, class NT> struct Plan_trace_run
       Eigen::MatrixXd J(m, m);
       Eigen::VectorXd f(m);
       for (std::size_t i = 0; i < m; ++i) {
-        f(long(i)) = sys.equations[E[i]].template evaluate<double>(x);
-        for (std::size_t k = 0; k < m; ++k) J(long(i), long(k)) = uses[E[i]][Y[k]] ? D[E[i]][Y[k]].template evaluate<double>(x) : 0.0;
+        f(long(i)) = Fd[E[i]].evaluate(x);
+        for (std::size_t k = 0; k < m; ++k) J(long(i), long(k)) = uses[E[i]][Y[k]] ? Dd[E[i]][Y[k]].evaluate(x) : 0.0;
       }
       Eigen::VectorXd d = J.fullPivLu().solve(f);
       if (!d.allFinite()) return false;
@@ -152,8 +183,8 @@ template <class IT, class NT> struct Plan_trace_run
     const std::size_t m = Y.size();
     Eigen::MatrixXd JY(m, m), JP(m, P.size());
     for (std::size_t i = 0; i < m; ++i) {
-      for (std::size_t k = 0; k < m; ++k) JY(long(i), long(k)) = uses[E[i]][Y[k]] ? D[E[i]][Y[k]].template evaluate<double>(x) : 0.0;
-      for (std::size_t k = 0; k < P.size(); ++k) JP(long(i), long(k)) = uses[E[i]][P[k]] ? D[E[i]][P[k]].template evaluate<double>(x) : 0.0;
+      for (std::size_t k = 0; k < m; ++k) JY(long(i), long(k)) = uses[E[i]][Y[k]] ? Dd[E[i]][Y[k]].evaluate(x) : 0.0;
+      for (std::size_t k = 0; k < P.size(); ++k) JP(long(i), long(k)) = uses[E[i]][P[k]] ? Dd[E[i]][P[k]].evaluate(x) : 0.0;
     }
     Eigen::FullPivLU<Eigen::MatrixXd> lu(JY);
     if (!lu.isInvertible()) return false;
@@ -170,7 +201,7 @@ template <class IT, class NT> struct Plan_trace_run
     std::vector<I> xc(n), xU(n), xX(n);
     for (std::size_t j = 0; j < n; ++j) xc[j] = xU[j] = xX[j] = I(x[j]);
     std::vector<I> g(m);
-    for (std::size_t i = 0; i < m; ++i) g[i] = sys.equations[E[i]].template evaluate<I>(xc);
+    for (std::size_t i = 0; i < m; ++i) g[i] = FI[E[i]].evaluate(xc);
     X.assign(m, I(0));
     for (int attempt = 0; attempt < 8; ++attempt) {
       for (std::size_t k = 0; k < P.size(); ++k) xU[P[k]] = U[k];
@@ -183,13 +214,13 @@ template <class IT, class NT> struct Plan_trace_run
         for (std::size_t q = 0; q < P.size(); ++q) {
           I s(0);
           for (std::size_t i = 0; i < m; ++i)
-            if (uses[E[i]][P[q]]) s += I(Yi(long(j), long(i))) * D[E[i]][P[q]].template evaluate<I>(xU);
+            if (uses[E[i]][P[q]]) s += I(Yi(long(j), long(i))) * DI[E[i]][P[q]].evaluate(xU);
           k -= s * (U[q] - I(x[P[q]]));
         }
         for (std::size_t l = 0; l < m; ++l) {
           I s(l == j ? 1 : 0);
           for (std::size_t i = 0; i < m; ++i)
-            if (uses[E[i]][Y[l]]) s -= I(Yi(long(j), long(i))) * D[E[i]][Y[l]].template evaluate<I>(xU);
+            if (uses[E[i]][Y[l]]) s -= I(Yi(long(j), long(i))) * DI[E[i]][Y[l]].evaluate(xU);
           k += s * I(-r[l], r[l]);
         }
         K[j] = k;
@@ -230,7 +261,7 @@ template <class IT, class NT> struct Plan_trace_run
     for (std::size_t k = 0; k < v0.size(); ++k) x[v0[k]] = p[k];
     Eigen::MatrixXd J(e0.size(), v0.size());
     for (std::size_t i = 0; i < e0.size(); ++i)
-      for (std::size_t k = 0; k < v0.size(); ++k) J(long(i), long(k)) = uses[e0[i]][v0[k]] ? D[e0[i]][v0[k]].template evaluate<double>(x) : 0.0;
+      for (std::size_t k = 0; k < v0.size(); ++k) J(long(i), long(k)) = uses[e0[i]][v0[k]] ? Dd[e0[i]][v0[k]].evaluate(x) : 0.0;
     Eigen::JacobiSVD<Eigen::MatrixXd> svd(J, Eigen::ComputeFullV);
     const Eigen::VectorXd t = svd.matrixV().col(long(v0.size()) - 1);
     std::size_t best = 0;
@@ -307,8 +338,8 @@ template <class IT, class NT> struct Plan_trace_run
       if (within)
         s.box.back() = {(std::max)(sys.box[j].first, O::lower_double(within->value[j])), (std::min)(sys.box[j].second, O::upper_double(within->value[j]))};
     }
-    for (std::size_t i : blk.equations) s.equations.push_back(restrict_polynomial<IT>(sys.equations[i], blk.variables, L.value, known));
-    for (std::size_t q : blk.inequalities) s.inequalities.push_back(restrict_polynomial<IT>(sys.inequalities[q], blk.variables, L.value, known));
+    for (std::size_t i : blk.equations) s.equations.push_back(restrict_polynomial<IT>(FIT[i], blk.variables, L.value, known));
+    for (std::size_t q : blk.inequalities) s.inequalities.push_back(restrict_polynomial<IT>(GIT[q], blk.variables, L.value, known));
     Subdivision_solver_parameters q = SP;
     q.maximal_precision = 0;  // interval coefficients: no higher precision to try
     q.maximal_boxes = (std::min)(q.maximal_boxes, PP.block_boxes);
@@ -424,7 +455,7 @@ template <class IT, class NT> struct Plan_trace_run
       bool keep = true;
       for (std::size_t b = 1; b < blocks.size() && keep; ++b)
         for (std::size_t q : blocks[b].inequalities) {
-          const I v = sys.inequalities[q].template evaluate<I>(xi);
+          const I v = GI[q].evaluate(xi);
           if (v.sup() < 0) keep = false;
           else if (!(v.inf() >= 0)) L.inequality_boundary = true;
         }
