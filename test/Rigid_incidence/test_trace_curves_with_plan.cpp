@@ -158,8 +158,8 @@ static RI::Polynomial_system<CGAL::Gmpq> system_of(const std::string& text)
 int main(int argc, char** argv)
 {
   // jansen.txt (without the inequalities: 32 assemblies over most of the crank circle, fewer
-  // where circle intersections fold) takes about 4 minutes (its runs of folds are traced whole
-  // in 12 variables): the ctest test_trace_curves_with_plan_jansen (label 'heavy', option
+  // where circle intersections fold) takes about 40 s in Release, minutes under the sanitizers
+  // (its runs of folds are traced whole in 12 variables): the ctest test_trace_curves_with_plan_jansen (label 'heavy', option
   // RIGID_INCIDENCE_HEAVY_TESTS) runs it, against the closed form at 36 crank angles
   if (argc > 1 && std::string(argv[1]) == "--jansen-without-inequalities") {
     check_jansen("jansen.txt", false);

@@ -116,6 +116,7 @@ template <class IT, class NT> struct Plan_trace_run
       down_eq.insert(down_eq.end(), blocks[b].equations.begin(), blocks[b].equations.end());
     }
     uses.resize(sys.equations.size());
+    CGAL::Protect_FPU_rounding<true> guard;  // derivatives of interval coefficients round outward
     for (std::size_t i = 0; i < sys.equations.size(); ++i) {
       uses[i].assign(n, 0);
       for (std::size_t j : sys.equations[i].variables()) uses[i][j] = 1;
@@ -152,7 +153,7 @@ template <class IT, class NT> struct Plan_trace_run
   static double mid(const IT& x) { return 0.5 * O::lower_double(x) + 0.5 * O::upper_double(x); }
 
   // Newton on the equations E for the unknowns Y (the other variables of x fixed); false if
-  // it does not converge (to steps of at most `tolerance` times the largest unknown).
+  // it does not converge (to steps of at most `tolerance` times max(1, the largest unknown)).
   bool newton(const std::vector<std::size_t>& E, const std::vector<std::size_t>& Y, std::vector<double>& x, double tolerance = 1e-15) const
   {
     const std::size_t m = Y.size();
@@ -317,9 +318,10 @@ template <class IT, class NT> struct Plan_trace_run
     std::vector<IT> value;  // every variable: X0 on block 0's, the later blocks' boxes
     bool inequality_boundary = false;
     // per later block, the index of its root at the piece's centre: lifts with the same first
-    // k entries have the same values in blocks 1 .. k over the whole piece (each lift's
-    // values in those blocks are the unique root of blocks 1 .. k in its box, the preconditioned
-    // operator being block triangular like the plan, and they agree at the centre)
+    // k entries have the same values in blocks 1 .. k over the whole piece (they agree at the
+    // centre, and the Jacobian is regular over the piece, as their Krawczyk tests prove; with
+    // paths from Newton, where "the same" is numerical, the completeness test checks it: every
+    // lift's box meets the one root box of its path)
     std::vector<std::size_t> path;
   };
 
@@ -338,6 +340,7 @@ template <class IT, class NT> struct Plan_trace_run
       if (within)
         s.box.back() = {(std::max)(sys.box[j].first, O::lower_double(within->value[j])), (std::min)(sys.box[j].second, O::upper_double(within->value[j]))};
     }
+    CGAL::Protect_FPU_rounding<true> guard;  // the products of double intervals round outward
     for (std::size_t i : blk.equations) s.equations.push_back(restrict_polynomial<IT>(FIT[i], blk.variables, L.value, known));
     for (std::size_t q : blk.inequalities) s.inequalities.push_back(restrict_polynomial<IT>(GIT[q], blk.variables, L.value, known));
     Subdivision_solver_parameters q = SP;
@@ -429,9 +432,10 @@ template <class IT, class NT> struct Plan_trace_run
   }
 
   // The roots of the later blocks above block 0's point u, by Newton from the lifts `from` of
-  // the piece before (their boxes' centres): as lift_point() gives them (the same order, paths
-  // and inequality flags: in the search box, the inequalities not certainly violated at the
-  // point), but not proved to be all of them, nor distinct.
+  // the piece before (their boxes' centres), in the order and with the paths lift_point()
+  // gives (roots within 1e-9 given one path), those in the search box whose inequalities are
+  // not certainly violated at the point (flagged where a sign there is uncertain); not proved
+  // to be all of them, nor distinct (duplicates fail the completeness test).
   void centre_by_newton(const std::vector<double>& u, const std::vector<Lift>& from, std::vector<Lift>& out) const
   {
     out.clear();
@@ -505,6 +509,7 @@ template <class IT, class NT> struct Plan_trace_run
   // block solves of a piece): the completeness test below then proves that they are all.
   bool lift_piece(const std::vector<I>& X0, std::vector<Lift>& out, std::string& why, const std::vector<Lift>* hint = nullptr)
   {
+    out.clear();
     std::vector<double> uc(v0.size());
     for (std::size_t k = 0; k < v0.size(); ++k) uc[k] = 0.5 * X0[k].inf() + 0.5 * X0[k].sup();
     std::vector<Lift> centre;
@@ -533,10 +538,11 @@ template <class IT, class NT> struct Plan_trace_run
         for (std::size_t j : down) all = all && meet(out[p].value[j], out[q].value[j]);
         if (all) { why = "two lifts' boxes overlap"; return false; }
       }
-    // completeness: above each lift's boxes of the blocks before b, block b solved with those
-    // boxes as its inputs has the roots the lifts agreeing with it before b give (root boxes
-    // and lift boxes meet one to one: every root lies in some root box, each holds one root per
-    // input), and roots or unresolved boxes whose partial lifts die (dies())
+    // completeness: above each group of lifts agreeing before b (over the hull of their boxes
+    // of the blocks before b), block b solved with those boxes as its inputs has the roots the
+    // group's lifts give (root boxes and lift boxes meet one to one: every root lies in some
+    // root box, each holds one root per input), and roots or unresolved boxes whose partial
+    // lifts die (dies())
     if (out.empty()) {
       Lift S;
       S.value.assign(n, IT(0));
@@ -558,11 +564,12 @@ template <class IT, class NT> struct Plan_trace_run
         // the group of out[g] (the lifts agreeing with it before b), with the hull of their
         // inputs, and one lift per root of block b among them
         Lift L = out[g];
-        std::vector<const Lift*> same;
+        std::vector<const Lift*> same, members;
         for (std::size_t m = g; m < out.size(); ++m) {
           const Lift& M = out[m];
           if (!std::equal(M.path.begin(), M.path.begin() + (b - 1), L.path.begin())) continue;
           grouped[m] = 1;
+          members.push_back(&M);
           for (std::size_t j = 0; j < n; ++j)
             if (known[j])
               L.value[j] = O::make(O::lower(L.value[j]) < O::lower(M.value[j]) ? O::lower(L.value[j]) : O::lower(M.value[j]),
@@ -580,6 +587,7 @@ template <class IT, class NT> struct Plan_trace_run
           if (!dies(b + 1, M, after)) { why = block_name(b) + " over the piece: " + u.reason; return false; }
         }
         std::vector<char> hit(same.size(), 0);
+        std::vector<std::size_t> root_of(same.size(), res.roots.size());  // the root each one holds
         for (const auto& root : res.roots) {
           if (!root.certified) { why = block_name(b) + " over the piece: a root not certified"; return false; }
           // the lifts whose boxes meet the root's box
@@ -590,7 +598,7 @@ template <class IT, class NT> struct Plan_trace_run
             if (all) { h = s; ++meets; }
           }
           if (meets > 1 || (meets == 1 && hit[h])) { why = block_name(b) + " over the piece: a root's box meets several lifts"; return false; }
-          if (meets == 1) { hit[h] = 1; continue; }
+          if (meets == 1) { hit[h] = 1; root_of[h] = std::size_t(&root - res.roots.data()); continue; }
           // a root of no lift: its partial lift must die in the blocks after b
           Lift M = L;
           for (std::size_t k = 0; k < blk.variables.size(); ++k) M.value[blk.variables[k]] = root.enclosure[k];
@@ -602,14 +610,16 @@ template <class IT, class NT> struct Plan_trace_run
           }
         }
         if (std::find(hit.begin(), hit.end(), char(0)) != hit.end()) { why = block_name(b) + " over the piece: a lift's root not found"; return false; }
-        // each lift's box meets exactly one root's box, which therefore holds the lift's root
-        // (every root lies in some root's box); a root's box met by one lift holds only its root
-        for (const Lift* S : same) {
-          std::size_t meets = 0;
-          for (const auto& root : res.roots) {
+        // each lift of the group (not only the one per root above) meets with its box exactly
+        // one root's box, which therefore holds its root (every root lies in some root's box),
+        // and it is the root of the lift with its path here: so the lifts that share a path
+        // share the root, whatever found the paths (the solves at the centre, or Newton)
+        for (const Lift* S : members) {
+          std::size_t meets = 0, which = res.roots.size();
+          for (std::size_t q = 0; q < res.roots.size(); ++q) {
             bool all = true;
-            for (std::size_t k = 0; k < blk.variables.size(); ++k) all = all && meet(root.enclosure[k], S->value[blk.variables[k]]);
-            meets += all;
+            for (std::size_t k = 0; k < blk.variables.size(); ++k) all = all && meet(res.roots[q].enclosure[k], S->value[blk.variables[k]]);
+            if (all) { ++meets; which = q; }
           }
           for (const auto& u : res.unresolved) {
             bool all = true;
@@ -617,6 +627,10 @@ template <class IT, class NT> struct Plan_trace_run
             meets += all;
           }
           if (meets != 1) { why = block_name(b) + " over the piece: a lift's box meets several roots' boxes"; return false; }
+          std::size_t r = same.size();
+          for (std::size_t t = 0; t < same.size(); ++t)
+            if (same[t]->path[b - 1] == S->path[b - 1]) r = t;
+          if (r == same.size() || root_of[r] != which) { why = block_name(b) + " over the piece: lifts with one path meet several roots"; return false; }
         }
       }
       for (std::size_t j : blk.variables) known[j] = 1;
@@ -1023,7 +1037,7 @@ template <class IT, class NT> struct Plan_trace_run
       if (before && before->ok && !before->lifts.empty() && same_node(before->b, a)) {
         P.ok = lift_piece(P.X0, P.lifts, P.why, &before->lifts);
         bool retry = false;
-        for (const char* w : {"do not account for", "root not found", "overlap", "no lift at the piece's centre", "meets several"})
+        for (const char* w : {"do not account for", "root not found", "overlap", "no lift at the piece's centre", "meets several", "meet several"})
           retry = retry || P.why.find(w) != std::string::npos;
         if (!P.ok && retry) {
           P.why.clear();
