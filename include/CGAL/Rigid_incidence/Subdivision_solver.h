@@ -522,8 +522,8 @@ private:
       // the test is tried on wider boxes too (a face system of the curve tracer in 11
       // variables, on a small box where it is nearly linear, then takes a box or two instead
       // of thousands), as long as it certifies or excludes at least 1 box in 8 after 32 tries
-      // (on random systems in 10 to 30 variables over [-2, 2]^n it never does, and trying it on
-      // every box made them 1.5 to 3 times slower per box).
+      // (on most random systems in 10 to 30 variables over [-2, 2]^n it does not, and trying
+      // it on every box made them 1.5 to 3 times slower per box).
       const bool wide = !(converging || rel <= 1.0 / 16 || small);
       if (!wide || (!precondition && !P.fast && (wide_tries < 32 || 8 * wide_hits >= wide_tries))) {
         if (wide) ++wide_tries;
