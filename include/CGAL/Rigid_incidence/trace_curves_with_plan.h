@@ -405,6 +405,17 @@ template <class IT, class NT> struct Plan_trace_run
   }
 
   static bool meet(const IT& a, const IT& b) { return !(O::upper(a) < O::lower(b)) && !(O::upper(b) < O::lower(a)); }
+  static IT hull(const IT& a, const IT& b)
+  {
+    return O::make(O::lower(a) < O::lower(b) ? O::lower(a) : O::lower(b), O::upper(b) < O::upper(a) ? O::upper(a) : O::upper(b));
+  }
+  // does `box` (over the block's variables) meet the lift's boxes there?
+  static bool meets_lift(const std::vector<IT>& box, const Lift& S, const Plan_block& blk)
+  {
+    for (std::size_t k = 0; k < blk.variables.size(); ++k)
+      if (!meet(box[k], S.value[blk.variables[k]])) return false;
+    return true;
+  }
 
   // Proves that no lift over the piece continues the partial lift P (blocks before b known):
   // block b and the ones after it, solved with interval coefficients over P's boxes, end
@@ -516,7 +527,6 @@ template <class IT, class NT> struct Plan_trace_run
     if (hint)
       centre_by_newton(uc, *hint, centre);
     else if (!lift_point(uc, centre)) { why = "a later block is not resolved above the piece's centre"; return false; }
-    out.clear();
     for (const Lift& c : centre) {
       std::vector<double> x(n, 0.0);
       for (std::size_t k = 0; k < v0.size(); ++k) x[v0[k]] = uc[k];
@@ -572,8 +582,7 @@ template <class IT, class NT> struct Plan_trace_run
           members.push_back(&M);
           for (std::size_t j = 0; j < n; ++j)
             if (known[j])
-              L.value[j] = O::make(O::lower(L.value[j]) < O::lower(M.value[j]) ? O::lower(L.value[j]) : O::lower(M.value[j]),
-                                   O::upper(M.value[j]) < O::upper(L.value[j]) ? O::upper(L.value[j]) : O::upper(M.value[j]));
+              L.value[j] = hull(L.value[j], M.value[j]);
           bool fresh = true;
           for (const Lift* S : same) fresh = fresh && S->path[b - 1] != M.path[b - 1];
           if (fresh) same.push_back(&M);
@@ -592,11 +601,8 @@ template <class IT, class NT> struct Plan_trace_run
           if (!root.certified) { why = block_name(b) + " over the piece: a root not certified"; return false; }
           // the lifts whose boxes meet the root's box
           std::size_t h = same.size(), meets = 0;
-          for (std::size_t s = 0; s < same.size(); ++s) {
-            bool all = true;
-            for (std::size_t k = 0; k < blk.variables.size(); ++k) all = all && meet(root.enclosure[k], same[s]->value[blk.variables[k]]);
-            if (all) { h = s; ++meets; }
-          }
+          for (std::size_t s = 0; s < same.size(); ++s)
+            if (meets_lift(root.enclosure, *same[s], blk)) { h = s; ++meets; }
           if (meets > 1 || (meets == 1 && hit[h])) { why = block_name(b) + " over the piece: a root's box meets several lifts"; return false; }
           if (meets == 1) { hit[h] = 1; root_of[h] = std::size_t(&root - res.roots.data()); continue; }
           // a root of no lift: its partial lift must die in the blocks after b
@@ -616,16 +622,9 @@ template <class IT, class NT> struct Plan_trace_run
         // share the root, whatever found the paths (the solves at the centre, or Newton)
         for (const Lift* S : members) {
           std::size_t meets = 0, which = res.roots.size();
-          for (std::size_t q = 0; q < res.roots.size(); ++q) {
-            bool all = true;
-            for (std::size_t k = 0; k < blk.variables.size(); ++k) all = all && meet(res.roots[q].enclosure[k], S->value[blk.variables[k]]);
-            if (all) { ++meets; which = q; }
-          }
-          for (const auto& u : res.unresolved) {
-            bool all = true;
-            for (std::size_t k = 0; k < blk.variables.size(); ++k) all = all && meet(u.box[k], S->value[blk.variables[k]]);
-            meets += all;
-          }
+          for (std::size_t q = 0; q < res.roots.size(); ++q)
+            if (meets_lift(res.roots[q].enclosure, *S, blk)) { ++meets; which = q; }
+          for (const auto& u : res.unresolved) meets += meets_lift(u.box, *S, blk);
           if (meets != 1) { why = block_name(b) + " over the piece: a lift's box meets several roots' boxes"; return false; }
           std::size_t r = same.size();
           for (std::size_t t = 0; t < same.size(); ++t)
