@@ -514,6 +514,17 @@ template <class IT, class NT> struct Plan_trace_run
     out.swap(lifts);
   }
 
+  // set by lift_piece() when it fails on the set of lifts itself (a root missed, found twice or
+  // matched to several lifts): solving the roots at the centre may then succeed where
+  // continuing them by Newton did not
+  bool lifts_missed = false;
+  bool fail_on_lifts(std::string& why, std::string text)
+  {
+    why = std::move(text);
+    lifts_missed = true;
+    return false;
+  }
+
   // The lifts over the box X0 of a piece of block 0's curve; false (with `why`) if they
   // cannot all be certified there. With `hint` (the lifts of the piece before), the roots
   // above X0's centre are continued from those by Newton instead of solved (about half the
@@ -521,6 +532,7 @@ template <class IT, class NT> struct Plan_trace_run
   bool lift_piece(const std::vector<I>& X0, std::vector<Lift>& out, std::string& why, const std::vector<Lift>* hint = nullptr)
   {
     out.clear();
+    lifts_missed = false;
     std::vector<double> uc(v0.size());
     for (std::size_t k = 0; k < v0.size(); ++k) uc[k] = 0.5 * X0[k].inf() + 0.5 * X0[k].sup();
     std::vector<Lift> centre;
@@ -546,7 +558,7 @@ template <class IT, class NT> struct Plan_trace_run
       for (std::size_t q = 0; q < p; ++q) {
         bool all = true;
         for (std::size_t j : down) all = all && meet(out[p].value[j], out[q].value[j]);
-        if (all) { why = "two lifts' boxes overlap"; return false; }
+        if (all) return fail_on_lifts(why, "two lifts' boxes overlap");
       }
     // completeness: above each group of lifts agreeing before b (over the hull of their boxes
     // of the blocks before b), block b solved with those boxes as its inputs has the roots the
@@ -558,7 +570,7 @@ template <class IT, class NT> struct Plan_trace_run
       S.value.assign(n, IT(0));
       std::vector<char> known(n, 0);
       for (std::size_t k = 0; k < v0.size(); ++k) { S.value[v0[k]] = to_it(X0[k]); known[v0[k]] = 1; }
-      if (!dies(1, S, known)) { why = "no lift at the piece's centre, but the later blocks are not proved empty over the piece"; return false; }
+      if (!dies(1, S, known)) return fail_on_lifts(why, "no lift at the piece's centre, but the later blocks are not proved empty over the piece");
     }
     // Block b is solved once for each group of lifts that agree on the blocks before it: their
     // values there are the same roots (see Lift::path), so the hull of their boxes is the input
@@ -603,19 +615,16 @@ template <class IT, class NT> struct Plan_trace_run
           std::size_t h = same.size(), meets = 0;
           for (std::size_t s = 0; s < same.size(); ++s)
             if (meets_lift(root.enclosure, *same[s], blk)) { h = s; ++meets; }
-          if (meets > 1 || (meets == 1 && hit[h])) { why = block_name(b) + " over the piece: a root's box meets several lifts"; return false; }
+          if (meets > 1 || (meets == 1 && hit[h])) return fail_on_lifts(why, block_name(b) + " over the piece: a root's box meets several lifts");
           if (meets == 1) { hit[h] = 1; root_of[h] = std::size_t(&root - res.roots.data()); continue; }
           // a root of no lift: its partial lift must die in the blocks after b
           Lift M = L;
           for (std::size_t k = 0; k < blk.variables.size(); ++k) M.value[blk.variables[k]] = root.enclosure[k];
           std::vector<char> after = known;
           for (std::size_t j : blk.variables) after[j] = 1;
-          if (!dies(b + 1, M, after)) {
-            why = block_name(b) + " over the piece: a root the lifts do not account for";
-            return false;
-          }
+          if (!dies(b + 1, M, after)) return fail_on_lifts(why, block_name(b) + " over the piece: a root the lifts do not account for");
         }
-        if (std::find(hit.begin(), hit.end(), char(0)) != hit.end()) { why = block_name(b) + " over the piece: a lift's root not found"; return false; }
+        if (std::find(hit.begin(), hit.end(), char(0)) != hit.end()) return fail_on_lifts(why, block_name(b) + " over the piece: a lift's root not found");
         // each lift of the group (not only the one per root above) meets with its box exactly
         // one root's box, which therefore holds its root (every root lies in some root's box),
         // and it is the root of the lift with its path here: so the lifts that share a path
@@ -625,11 +634,11 @@ template <class IT, class NT> struct Plan_trace_run
           for (std::size_t q = 0; q < res.roots.size(); ++q)
             if (meets_lift(res.roots[q].enclosure, *S, blk)) { ++meets; which = q; }
           for (const auto& u : res.unresolved) meets += meets_lift(u.box, *S, blk);
-          if (meets != 1) { why = block_name(b) + " over the piece: a lift's box meets several roots' boxes"; return false; }
+          if (meets != 1) return fail_on_lifts(why, block_name(b) + " over the piece: a lift's box meets several roots' boxes");
           std::size_t r = same.size();
           for (std::size_t t = 0; t < same.size(); ++t)
             if (same[t]->path[b - 1] == S->path[b - 1]) r = t;
-          if (r == same.size() || root_of[r] != which) { why = block_name(b) + " over the piece: lifts with one path meet several roots"; return false; }
+          if (r == same.size() || root_of[r] != which) return fail_on_lifts(why, block_name(b) + " over the piece: lifts with one path meet several roots");
         }
       }
       for (std::size_t j : blk.variables) known[j] = 1;
@@ -1035,10 +1044,7 @@ template <class IT, class NT> struct Plan_trace_run
       const Piece* before = out.empty() ? nullptr : &out.back();
       if (before && before->ok && !before->lifts.empty() && same_node(before->b, a)) {
         P.ok = lift_piece(P.X0, P.lifts, P.why, &before->lifts);
-        bool retry = false;
-        for (const char* w : {"do not account for", "root not found", "overlap", "no lift at the piece's centre", "meets several", "meet several"})
-          retry = retry || P.why.find(w) != std::string::npos;
-        if (!P.ok && retry) {
+        if (!P.ok && lifts_missed) {
           P.why.clear();
           P.ok = lift_piece(P.X0, P.lifts, P.why);
         }
