@@ -864,16 +864,20 @@ static void case_collinear()
     double pe = scene_error(c.p.scene, pc, why);
     CHECK(pe <= 1e-12, c.p.scene.name << ": the planted configuration is off by " << pe << " at " << why << " (test bug)");
     bool ran = check_honest(t, check);
-    std::size_t count = 0;
+    std::size_t count = 0, same = 0;
     int at = ran ? find_planted(t, c.p.solution, 1e-6, count) : -1;
-    const bool ok = ran && count <= 1 && (at >= 0 || !t.r.complete());
+    // reported twice (not merged): within 1e-9 (quad_flap_1e-6 has a second, distinct certified
+    // configuration 2e-7 of its size from the planted one: the mirror image across the base
+    // plane of its fourth configuration, as the planted one is of its third)
+    if (ran) find_planted(t, c.p.solution, 1e-9, same);
+    const bool ok = ran && same <= 1 && (at >= 0 || !t.r.complete());
     std::string lw;
     const double lr = library_residual(c.p.scene, c.p.solution, lw);
     print_run(t, std::string(", planted ") + (at >= 0 ? "found" : "not found") + (ok ? "" : "  [KNOWN FAILURE: " + c.bug + "]"));
     if (!(lr <= 1e-9)) std::cout << "    the library's residuals() of the planted configuration: " << lr << lw << "\n";
     if (check) {
       CHECK(ran, t.name << ": exception");
-      CHECK(count <= 1, t.name << ": the planted configuration reported " << count << " times");
+      CHECK(same <= 1, t.name << ": the planted configuration reported " << same << " times");
       CHECK(!ran || at >= 0 || !t.r.complete(), t.name << ": complete() without the planted configuration (root lost)");
     } else if (ok)
       std::cout << "    (" << t.name << " now passes: move it out of the known failures)\n";

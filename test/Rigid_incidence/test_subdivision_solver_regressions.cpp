@@ -15,7 +15,12 @@
 //  - a planted system in 11 variables (too many for the dense preconditioned arrays) on a small
 //    box around its root, and on one beside it: the Krawczyk test must be tried at once, not
 //    after halving every variable 4 times (the curve tracer's face systems around a fold of
-//    Jansen's linkage took thousands of boxes each).
+//    Jansen's linkage took thousands of boxes each);
+//  - a planted root whose Jacobian is nearly singular along an oblique direction (a thin tube
+//    of near-solutions through it, the case the oriented boxes are for), with oriented boxes
+//    and without, in double and Gmpfi: one certified root at the planted point either way, and
+//    a sheared solve tried (at eps = 1e-8 it falls back to plain subdivision: the fallback
+//    must not lose the root either).
 
 #include "test_check.h"
 
@@ -196,10 +201,57 @@ static void many_variables()
   }
 }
 
+// u = (x - r1) + (y - r2), w = (x - r1) - (y - r2), Z = z - r3:
+//   w - u^2 = 0,  eps u + w - u^2 + u^3 = 0,  Z - u^2 + w = 0.
+// The first two give u (eps + u^2) = 0: u = 0 is the only real root (u = +-i sqrt(eps) are
+// complex, which leaves |f| < eps^1.5 along the parabola w = u^2 for |u| < sqrt(eps)), so the
+// one real root is r, and the Jacobian there has singular values about eps / 2 apart from 1
+// along the oblique direction x = y.
+template <class IT> static void ill_conditioned_tube(const std::string& type)
+{
+  typedef RI::Sparse_polynomial<Q> P;
+  const std::size_t n = 3;
+  const Q r[3] = {Q(1, 7), Q(-2, 9), Q(3, 11)};
+  const P X = P::variable(n, 0) - P::constant(n, r[0]), Y = P::variable(n, 1) - P::constant(n, r[1]),
+          Z = P::variable(n, 2) - P::constant(n, r[2]);
+  const P u = X + Y, w = X - Y;
+  for (int e : {5, 8}) {
+    Q eps(1);
+    for (int k = 0; k < e; ++k) eps = eps / Q(10);
+    RI::Polynomial_system<Q> s;
+    s.variable_names = {"x", "y", "z"};
+    s.equations = {w - u * u, P::constant(n, eps) * u + w - u * u + u * u * u, Z - u * u + w};
+    s.box = {{-1, 1}, {-1, 1}, {-1, 1}};
+    for (bool oriented : {true, false}) {
+      RI::Subdivision_solver_parameters prm;
+      prm.oriented_boxes = oriented;
+      RI::Solver_result<IT> res = RI::Subdivision_solver<IT>(prm).solve(s);
+      const std::string what = "tube, eps = 1e-" + std::to_string(e) + ", " + type + (oriented ? ", oriented boxes: " : ", axis-aligned boxes: ");
+      CHECK(res.complete() && res.roots.size() == 1, what << res.roots.size() << " roots, complete " << res.complete());
+      if (res.roots.size() == 1) {
+        CHECK(res.roots[0].certified, what << "certified");
+        for (std::size_t j = 0; j < n; ++j) {
+          const std::pair<double, double> b = CGAL::to_interval(res.roots[0].enclosure[j]), q = CGAL::to_interval(r[j]);
+          CHECK(b.first <= q.second && q.first <= b.second, what << "variable " << j << " [" << b.first << ", " << b.second << "] encloses " << q.first);
+        }
+      }
+      if (oriented) {
+        CHECK(res.statistics.oriented_solves >= 1, what << "no sheared solve tried");
+      } else {
+        CHECK(res.statistics.oriented_solves == 0, what << res.statistics.oriented_solves << " sheared solves with oriented_boxes false");
+      }
+    }
+  }
+}
+
 int main()
 {
   storage_limit();
   many_variables();
+  ill_conditioned_tube<I>("Interval_nt");
+#ifdef CGAL_USE_MPFI
+  ill_conditioned_tube<CGAL::Gmpfi>("Gmpfi");
+#endif
   {
     std::vector<Q> p = mignotte(6, 100);
     RI::Solver_result<I> r = RI::Subdivision_solver<I>().solve(univariate<I>(p, -1, 1));

@@ -82,6 +82,13 @@ struct Subdivision_solver_parameters
   double reduction_ratio = 0.7;
   /// How to choose the variable to split.
   Split_strategy split = Split_strategy::LARGEST_WIDTH;
+  /// Near an ill-conditioned point (the Jacobian's singular values at the box centre more
+  /// than 100 times apart, once the box is at most 1/16 of the search box wide), solve the box
+  /// once in sheared coordinates, one of whose axes follows the Jacobian's near-null direction
+  /// (see the user manual); the box falls back to ordinary subdivision when that solve leaves
+  /// anything unresolved, and the solver stops trying after 8 such solves once half of them
+  /// fell back. Needs the preconditioning; not used with inequalities.
+  bool oriented_boxes = true;
   /// Stop once the unknown boxes show a curve of solutions (a chain of at least this many
   /// touching rank-deficient boxes spanning 100 singular widths): the rest is `PENDING` with
   /// reason "stopped: positive-dimensional solution set", and the result's diagnosis says
@@ -151,6 +158,8 @@ struct Solver_statistics
   std::size_t duplicates = 0;       ///< certified roots merged into one found before
   std::size_t precision_retries = 0;///< clusters of unknown boxes solved again (at a higher precision, or at the working precision down to the minimal width)
   std::size_t maximal_depth = 0;    ///< deepest subdivision level
+  std::size_t oriented_solves = 0;  ///< boxes solved in sheared coordinates (`Subdivision_solver_parameters::oriented_boxes`; their boxes are counted in `boxes`)
+  std::size_t oriented_fallbacks = 0; ///< of those, the ones that left something unresolved and were subdivided as usual
   double seconds = 0;               ///< wall-clock time of the solve
 };
 

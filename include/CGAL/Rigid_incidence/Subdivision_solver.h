@@ -130,6 +130,7 @@ private:
     std::vector<Bound> lo, hi;
     std::vector<std::vector<IT>> b;      // per equation, Bernstein array on [lo, hi]
     std::size_t depth = 0;
+    bool no_shear = false;               // a solve in sheared coordinates failed on it or an ancestor
   };
 
   struct Found
@@ -190,6 +191,7 @@ private:
     double last_contraction = 0;          // ||I - Y J(X)|| of the last Krawczyk test
     bool certify_excluded = false;        // the last certify() proved its node root-free
     std::size_t wide_tries = 0, wide_hits = 0;  // Krawczyk tests on wide boxes, and those that settled the box
+    bool ill_conditioned = false;         // the last reduce() met singular values more than 100 times apart
     Shape full;                           // all variables, the highest degree of each
     bool precondition;
     std::vector<internal::Embedding<IT>> embedding;  // per equation: its array over `full`
@@ -353,18 +355,16 @@ private:
       std::vector<unsigned> dd = s.degrees;
       dd[k] -= 1;
       ds.set(s.variables, dd);
-      da.assign(ds.size, T(0));
-      for (std::size_t idx = 0; idx < s.size; ++idx) {
-        const std::size_t ik = (idx / s.strides[k]) % (s.degrees[k] + 1);
-        if (ik == 0) continue;
-        std::size_t rest = idx, di = 0;
-        for (std::size_t m = 0; m < s.variables.size(); ++m) {
-          const std::size_t im = rest / s.strides[m];
-          rest -= im * s.strides[m];
-          di += (m == k ? im - 1 : im) * ds.strides[m];
+      da.resize(ds.size);
+      // index = (outer * (d + 1) + i) * st + inner in s, (outer * d + i - 1) * st + inner in ds
+      const std::size_t st = s.strides[k], d = s.degrees[k], outer = s.size / (st * (d + 1));
+      for (std::size_t o = 0; o < outer; ++o)
+        for (std::size_t i = 1; i <= d; ++i) {
+          const T f = T(int(i));
+          const T* from = a.data() + (o * (d + 1) + i) * st;
+          T* to = da.data() + (o * d + i - 1) * st;
+          for (std::size_t in = 0; in < st; ++in) to[in] = f * from[in];
         }
-        da[di] = da[di] + T(int(ik)) * a[idx];
-      }
     }
 
     // ---- small helpers --------------------------------------------------------------
@@ -517,6 +517,13 @@ private:
         rel = (std::max)(rel, w / initial_width[j]);
         if (w > min_width) small = false;
       }
+      if (P.oriented_boxes && ill_conditioned && !x.no_shear && precondition && ineq.empty() && !small && rel <= 1.0 / 16 &&
+          (result.statistics.oriented_solves < 8 || 2 * result.statistics.oriented_fallbacks < result.statistics.oriented_solves)) {
+        // (given up after 8 tries once half of them fail: along a curve of solutions, or at a
+        // multiple root, every sheared solve leaves boxes unresolved)
+        if (sheared_solve(x)) return;
+        x.no_shear = true;  // and its children: subdivided as usual
+      }
       // Without the preconditioned clipping (a system too large for its dense arrays) nothing
       // converges, and a box 1/16 as wide in each of n variables is 16^-n of the volume: so
       // the test is tried on wider boxes too (a face system of the curve tracer in 11
@@ -570,6 +577,164 @@ private:
       stack.push_back(std::move(l));
     }
 
+    // ---- oriented boxes -----------------------------------------------------------------
+    // Near an ill-conditioned root, or a near miss (a point where every equation nearly
+    // vanishes and the Jacobian is nearly singular), the points where all the equations are
+    // small form a thin tube along the Jacobian's near-null direction v. An axis-aligned box
+    // around a piece of that tube is wide in every variable v moves, and the combination of
+    // the equations that the smallest singular value governs varies over the whole box by its
+    // curvature times the squared width: the box is excluded only once it is about
+    // sigma_min / curvature wide, so plain subdivision walks the tube in thousands of tiny
+    // boxes (1200 to 1800 around each of the Stewart-Gough platform's ill-conditioned roots).
+    // In the sheared coordinates
+    //   x_j = c_j + s_j y_j + g_j y_p (j != p),   x_p = c_p + s_p y_p,
+    // with p the variable v moves most and g_j = s_j v_j / v_p, the tube follows the y_p axis:
+    // the clipping shrinks the other y_j to a thin slab around it, over which that combination
+    // varies little, and long pieces of the tube go at once. The equations are composed with
+    // the map (each y_j keeps x_j's degree, y_p gets the total degree), the parallelepiped of
+    // y that covers the box is solved by a solver of its own (without oriented boxes, at most
+    // 256 boxes: the Stewart-Gough platform's 162 sheared solves take 1 to 111), and its roots
+    // that meet the box are certified again in x. Returns false, having recorded at most some
+    // of the box's roots, when the sheared solve leaves anything unresolved (a root so
+    // ill-conditioned that the sheared system's rounded coefficients blur it) or a root
+    // cannot be certified in x: the box is then subdivided as usual.
+    bool sheared_solve(const Node& x)
+    {
+      std::vector<double> c = center_d(x.lo, x.hi), s(n), g(n, 0.0);
+      for (std::size_t j = 0; j < n; ++j) {
+        s[j] = width(x, j);
+        if (!(s[j] > 0) || !std::isfinite(s[j])) return false;
+      }
+      // the Jacobian scaled by the widths, over the variables in which the box is not already
+      // thin (a thin variable's column is small, which is not a tube through the box)
+      const double widest = *std::max_element(s.begin(), s.end());
+      std::vector<std::size_t> wide;
+      for (std::size_t j = 0; j < n; ++j) if (s[j] >= 1e-3 * widest) wide.push_back(j);
+      if (wide.size() < 2) return false;
+      Vector f;
+      Matrix J;
+      evaluate_d(c, f, J);
+      Matrix Jw(Eigen::Index(n), Eigen::Index(wide.size()));
+      for (std::size_t k = 0; k < wide.size(); ++k) Jw.col(Eigen::Index(k)) = J.col(Eigen::Index(wide[k])) * s[wide[k]];
+      if (!Jw.allFinite()) return false;
+      Eigen::JacobiSVD<Matrix> svd(Jw, Eigen::ComputeFullV);
+      const Vector& sv = svd.singularValues();
+      const Eigen::Index m = Eigen::Index(wide.size());
+      if (!(sv[m - 1] < 0.01 * sv[0])) return false;
+      std::vector<double> v(n, 0.0);
+      for (std::size_t k = 0; k < wide.size(); ++k) v[wide[k]] = svd.matrixV()(Eigen::Index(k), m - 1);
+      std::size_t p = 0;
+      for (std::size_t j = 1; j < n; ++j) if (std::abs(v[j]) > std::abs(v[p])) p = j;
+      for (std::size_t j = 0; j < n; ++j) if (j != p) g[j] = s[j] * v[j] / v[p];
+      // the doubles c, s, g define the map exactly; the y-box covers the node (interval
+      // arithmetic, rounded outward)
+      std::vector<IT> X(n), Y(n);
+      for (std::size_t j = 0; j < n; ++j) X[j] = O::make(x.lo[j], x.hi[j]);
+      Y[p] = (X[p] - IT(c[p])) / IT(s[p]);
+      for (std::size_t j = 0; j < n; ++j) if (j != p) Y[j] = (X[j] - IT(c[j]) - IT(g[j]) * Y[p]) / IT(s[j]);
+      Polynomial_system<IT> sys;
+      for (std::size_t j = 0; j < n; ++j) {
+        sys.variable_names.push_back("y" + std::to_string(j));
+        sys.box.push_back({O::lower_double(Y[j]), O::upper_double(Y[j])});
+      }
+      for (const Equation& e : eq) sys.equations.push_back(sheared(e, c, s, g, p));
+      Subdivision_solver_parameters q = P;
+      q.oriented_boxes = false;
+      q.maximal_boxes = (std::min)(std::size_t(256), P.maximal_boxes - (std::min)(P.maximal_boxes, result.statistics.boxes));
+      if (q.maximal_boxes == 0) return false;
+      if (P.maximal_seconds > 0) {
+        q.maximal_seconds = P.maximal_seconds - seconds();
+        if (!(q.maximal_seconds > 0)) return false;
+      }
+      ++result.statistics.oriented_solves;
+      const Solver_result<IT> r = Subdivision_solver<IT>(q).solve(sys);
+      result.statistics.boxes += r.statistics.boxes;
+      result.statistics.krawczyk_tests += r.statistics.krawczyk_tests;
+      if (!r.unresolved.empty()) { ++result.statistics.oriented_fallbacks; return false; }
+      for (const auto& root : r.roots) {
+        std::vector<IT> Z(n);
+        const IT& yp = root.enclosure[p];
+        bool meets = true;
+        for (std::size_t j = 0; j < n && meets; ++j) {
+          Z[j] = j == p ? IT(c[p]) + IT(s[p]) * yp : IT(c[j]) + IT(s[j]) * root.enclosure[j] + IT(g[j]) * yp;
+          meets = !(O::upper(Z[j]) < x.lo[j]) && !(x.hi[j] < O::lower(Z[j]));
+        }
+        if (!meets) continue;  // a root of the parallelepiped outside the node: another node's
+        Node z = make_node(lower_of(Z), upper_of(Z), x.depth);
+        if (!(P.fast ? polish(z) : certify(z))) { ++result.statistics.oriented_fallbacks; return false; }
+      }
+      return true;
+    }
+
+    // The equation composed with the shear of sheared_solve(): each term's factors
+    // (c_j + s_j y_j + g_j y_p)^a = sum a! / (a0! a1! a2!) c_j^a0 (s_j y_j)^a1 (g_j y_p)^a2
+    // multiplied out in interval arithmetic.
+    Sparse_polynomial<IT> sheared(const Equation& e, const std::vector<double>& c, const std::vector<double>& s,
+                                  const std::vector<double>& g, std::size_t p) const
+    {
+      const Shape& sh = e.shape;
+      const std::size_t m = sh.variables.size();
+      unsigned total = 0, top = 0;
+      std::vector<unsigned> idx(m);
+      for (std::size_t a = 0; a < sh.size; ++a) {
+        if (internal::certainly_zero(e.power[a])) continue;
+        unsigned t = 0;
+        for (std::size_t k = 0; k < m; ++k) t += unsigned((a / sh.strides[k]) % (sh.degrees[k] + 1));
+        total = (std::max)(total, t);
+      }
+      for (unsigned d : sh.degrees) top = (std::max)(top, d);
+      // the target: x's variables and y_p; y_p of the total degree
+      std::vector<std::size_t> tv = sh.variables;
+      if (sh.local(p) == std::size_t(-1)) tv.insert(std::lower_bound(tv.begin(), tv.end(), p), p);
+      std::vector<unsigned> td;
+      for (std::size_t v : tv) td.push_back(v == p ? total : sh.degrees[sh.local(v)]);
+      Shape ts;
+      ts.set(tv, td);
+      const std::size_t tp = ts.local(p);
+      std::vector<IT> G(ts.size, IT(0));
+      // powers of c_j, s_j, g_j
+      std::vector<std::vector<IT>> cp(m), sp(m), gp(m);
+      for (std::size_t k = 0; k < m; ++k) {
+        const std::size_t j = sh.variables[k];
+        cp[k].push_back(IT(1)); sp[k].push_back(IT(1)); gp[k].push_back(IT(1));
+        for (unsigned d = 1; d <= top; ++d) {
+          cp[k].push_back(cp[k].back() * IT(c[j]));
+          sp[k].push_back(sp[k].back() * IT(s[j]));
+          gp[k].push_back(gp[k].back() * IT(g[j]));
+        }
+      }
+      std::vector<std::size_t> tk(m);
+      for (std::size_t k = 0; k < m; ++k) tk[k] = ts.local(sh.variables[k]);
+      std::function<void(std::size_t, const IT&, std::size_t, unsigned)> expand = [&](std::size_t k, const IT& coef, std::size_t at,
+                                                                                      unsigned pdeg) {
+        if (k == m) { G[at + pdeg * ts.strides[tp]] = G[at + pdeg * ts.strides[tp]] + coef; return; }
+        const unsigned a = idx[k];
+        if (sh.variables[k] == p) {
+          for (unsigned a2 = 0; a2 <= a; ++a2)
+            expand(k + 1, coef * IT(internal::binomial(a, a2)) * cp[k][a - a2] * sp[k][a2], at, pdeg + a2);
+          return;
+        }
+        for (unsigned a1 = 0; a1 <= a; ++a1)
+          for (unsigned a2 = 0; a1 + a2 <= a; ++a2) {
+            if (a2 > 0 && g[sh.variables[k]] == 0) break;
+            expand(k + 1, coef * IT(internal::binomial(a, a1) * internal::binomial(a - a1, a2)) * cp[k][a - a1 - a2] * sp[k][a1] * gp[k][a2],
+                   at + a1 * ts.strides[tk[k]], pdeg + a2);
+          }
+      };
+      for (std::size_t a = 0; a < sh.size; ++a) {
+        if (internal::certainly_zero(e.power[a])) continue;
+        for (std::size_t k = 0; k < m; ++k) idx[k] = unsigned((a / sh.strides[k]) % (sh.degrees[k] + 1));
+        expand(0, e.power[a], 0, 0);
+      }
+      Sparse_polynomial<IT> out(n);
+      std::vector<unsigned> ex(n, 0);
+      for (std::size_t a = 0; a < ts.size; ++a) {
+        for (std::size_t k = 0; k < tv.size(); ++k) ex[tv[k]] = unsigned((a / ts.strides[k]) % (ts.degrees[k] + 1));
+        out.add_term(ex, G[a]);
+      }
+      return out;
+    }
+
     void split_node(const Node& x, std::size_t j, Node& l, Node& r) const
     {
       Bound m = midpoint(x.lo[j], x.hi[j]);
@@ -577,6 +742,7 @@ private:
       l.lo = x.lo; l.hi = x.hi; l.hi[j] = m;
       r.lo = x.lo; r.hi = x.hi; r.lo[j] = m;
       l.depth = r.depth = x.depth + 1;
+      l.no_shear = r.no_shear = x.no_shear;
       l.b.resize(n);
       r.b.resize(n);
       for (std::size_t i = 0; i < n; ++i) {
@@ -627,6 +793,7 @@ private:
     // box holds no root; `ratio` is the largest remaining fraction of a variable's width.
     bool reduce(Node& x, double& ratio)
     {
+      ill_conditioned = false;
       std::vector<double> tu(n, 0.0), tv(n, 1.0), cu, cv;
       {
         // the equations themselves (the projected-polyhedron method) first: cheap (each over
@@ -670,6 +837,7 @@ private:
             Eigen::JacobiSVD<Matrix> svd(J, Eigen::ComputeFullU | Eigen::ComputeFullV);
             const Vector& sv = svd.singularValues();
             if (sv[Eigen::Index(n) - 1] < 0.01 * sv[0]) {
+              ill_conditioned = true;
               Vector inv(n);
               for (std::size_t k = 0; k < n; ++k) inv[Eigen::Index(k)] = 1 / (std::max)(sv[Eigen::Index(k)], 0.1 * sv[0]);
               Matrix R = svd.matrixV() * inv.asDiagonal() * svd.matrixU().transpose();
@@ -690,10 +858,9 @@ private:
         if (tu[j] > tv[j]) return false;
         ratio = (std::max)(ratio, tv[j] - tu[j]);
       }
-      if (ratio > 0.9) { ratio = 1; return true; }  // not worth the restriction
       bool changed = false;
       for (std::size_t j = 0; j < n; ++j) {
-        if (tu[j] <= 0 && tv[j] >= 1) continue;
+        if (tv[j] - tu[j] > 0.9) continue;  // not worth the restriction
         IT w = width_interval(x.lo[j], x.hi[j]);
         Bound nlo = x.lo[j], nhi = x.hi[j];
         if (tu[j] > 0) { Bound c = O::lower(pt(x.lo[j]) + w * IT(tu[j])); if (c > nlo) nlo = c; }
