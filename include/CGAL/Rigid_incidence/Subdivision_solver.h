@@ -517,7 +517,7 @@ private:
         rel = (std::max)(rel, w / initial_width[j]);
         if (w > min_width) small = false;
       }
-      if (P.oriented_boxes && ill_conditioned && !x.no_shear && precondition && ineq.empty() && !small && rel <= 1.0 / 16 &&
+      if (P.oriented_boxes && !P.fast && ill_conditioned && !x.no_shear && precondition && ineq.empty() && !small && rel <= 1.0 / 16 &&
           (result.statistics.oriented_solves < 8 || 2 * result.statistics.oriented_fallbacks < result.statistics.oriented_solves)) {
         // (given up after 8 tries once half of them fail: along a curve of solutions, or at a
         // multiple root, every sheared solve leaves boxes unresolved)
@@ -661,7 +661,7 @@ private:
         }
         if (!meets) continue;  // a root of the parallelepiped outside the node: another node's
         Node z = make_node(lower_of(Z), upper_of(Z), x.depth);
-        if (!(P.fast ? polish(z) : certify(z))) { ++result.statistics.oriented_fallbacks; return false; }
+        if (!certify(z)) { ++result.statistics.oriented_fallbacks; return false; }
       }
       return true;
     }
