@@ -868,7 +868,7 @@ static void case_collinear()
     int at = ran ? find_planted(t, c.p.solution, 1e-6, count) : -1;
     // reported twice (not merged): within 1e-9 (quad_flap_1e-6 has a second, distinct certified
     // configuration 2e-7 of its size from the planted one: the mirror image across the base
-    // plane of its fourth configuration, as the planted one is of its third)
+    // plane of its first configuration, as the planted one is of its third)
     if (ran) find_planted(t, c.p.solution, 1e-9, same);
     const bool ok = ran && same <= 1 && (at >= 0 || !t.r.complete());
     std::string lw;

@@ -19,8 +19,10 @@
 //  - a planted root whose Jacobian is nearly singular along an oblique direction (a thin tube
 //    of near-solutions through it, the case the oriented boxes are for), with oriented boxes
 //    and without, in double and Gmpfi: one certified root at the planted point either way, and
-//    a sheared solve tried (at eps = 1e-8 it falls back to plain subdivision: the fallback
-//    must not lose the root either).
+//    a sheared solve tried, and at eps = 1e-5 not every one falling back (at eps = 1e-8 it
+//    falls back to plain subdivision: the fallback must not lose the root either); and with
+//    maximal_coefficients just above what the system needs, the larger sheared system must
+//    fall back, not throw out of solve() (found by a review).
 
 #include "test_check.h"
 
@@ -209,6 +211,30 @@ static void many_variables()
 // along the oblique direction x = y.
 template <class IT> static void ill_conditioned_tube(const std::string& type)
 {
+  {
+    // u = X + Y, w = X - 2 Y: the input needs fewer than 300 coefficients, the sheared system more
+    typedef RI::Sparse_polynomial<Q> P;
+    const std::size_t n = 3;
+    const Q r[3] = {Q(1, 7), Q(-2, 9), Q(3, 11)};
+    const P X = P::variable(n, 0) - P::constant(n, r[0]), Y = P::variable(n, 1) - P::constant(n, r[1]),
+            Z = P::variable(n, 2) - P::constant(n, r[2]);
+    const P u = X + Y, w = X - P::constant(n, Q(2)) * Y;
+    RI::Polynomial_system<Q> s;
+    s.variable_names = {"x", "y", "z"};
+    s.equations = {w - u * u, P::constant(n, Q(1, 100000)) * u + w - u * u + u * u * u, Z - Y * Y};
+    s.box = {{-1, 1}, {-1, 1}, {-1, 1}};
+    RI::Subdivision_solver_parameters prm;
+    prm.maximal_coefficients = 300;
+    const std::string what = "tube, maximal_coefficients 300, " + type + ": ";
+    try {
+      RI::Solver_result<IT> res = RI::Subdivision_solver<IT>(prm).solve(s);
+      CHECK(res.complete() && res.roots.size() == 1 && res.roots[0].certified, what << res.roots.size() << " roots, complete " << res.complete());
+      CHECK(res.statistics.oriented_solves >= 1 && res.statistics.oriented_fallbacks >= 1,
+            what << res.statistics.oriented_solves << " sheared solves, " << res.statistics.oriented_fallbacks << " fallbacks (expected the sheared system refused)");
+    } catch (const std::exception& e) {
+      CHECK(false, what << "exception: " << e.what());
+    }
+  }
   typedef RI::Sparse_polynomial<Q> P;
   const std::size_t n = 3;
   const Q r[3] = {Q(1, 7), Q(-2, 9), Q(3, 11)};
@@ -237,6 +263,10 @@ template <class IT> static void ill_conditioned_tube(const std::string& type)
       }
       if (oriented) {
         CHECK(res.statistics.oriented_solves >= 1, what << "no sheared solve tried");
+        // at 1e-5 the sheared solve settles its box (a broken composition or y-box would fall back)
+        if (e == 5)
+          CHECK(res.statistics.oriented_fallbacks < res.statistics.oriented_solves,
+                what << res.statistics.oriented_fallbacks << " of " << res.statistics.oriented_solves << " sheared solves fell back");
       } else {
         CHECK(res.statistics.oriented_solves == 0, what << res.statistics.oriented_solves << " sheared solves with oriented_boxes false");
       }

@@ -637,7 +637,11 @@ private:
         sys.variable_names.push_back("y" + std::to_string(j));
         sys.box.push_back({O::lower_double(Y[j]), O::upper_double(Y[j])});
       }
-      for (const Equation& e : eq) sys.equations.push_back(sheared(e, c, s, g, p));
+      for (const Equation& e : eq) {
+        std::optional<Sparse_polynomial<IT>> h = sheared(e, c, s, g, p);
+        if (!h) return false;
+        sys.equations.push_back(std::move(*h));
+      }
       Subdivision_solver_parameters q = P;
       q.oriented_boxes = false;
       q.maximal_boxes = (std::min)(std::size_t(256), P.maximal_boxes - (std::min)(P.maximal_boxes, result.statistics.boxes));
@@ -647,9 +651,23 @@ private:
         if (!(q.maximal_seconds > 0)) return false;
       }
       ++result.statistics.oriented_solves;
-      const Solver_result<IT> r = Subdivision_solver<IT>(q).solve(sys);
-      result.statistics.boxes += r.statistics.boxes;
-      result.statistics.krawczyk_tests += r.statistics.krawczyk_tests;
+      Solver_result<IT> r;
+      try {
+        r = Subdivision_solver<IT>(q).solve(sys);
+      } catch (const Input_error&) {
+        // the sheared arrays are larger than the node's (y_p of the total degree in every
+        // equation): beyond maximal_coefficients, subdivide as usual
+        ++result.statistics.oriented_fallbacks;
+        return false;
+      }
+      Solver_statistics& st = result.statistics;
+      st.boxes += r.statistics.boxes;
+      st.krawczyk_tests += r.statistics.krawczyk_tests;
+      st.excluded += r.statistics.excluded;
+      st.splits += r.statistics.splits;
+      st.reductions += r.statistics.reductions;
+      st.certified_boxes += r.statistics.certified_boxes;
+      st.maximal_depth = (std::max)(st.maximal_depth, x.depth + r.statistics.maximal_depth);
       if (!r.unresolved.empty()) { ++result.statistics.oriented_fallbacks; return false; }
       for (const auto& root : r.roots) {
         std::vector<IT> Z(n);
@@ -668,9 +686,10 @@ private:
 
     // The equation composed with the shear of sheared_solve(): each term's factors
     // (c_j + s_j y_j + g_j y_p)^a = sum a! / (a0! a1! a2!) c_j^a0 (s_j y_j)^a1 (g_j y_p)^a2
-    // multiplied out in interval arithmetic.
-    Sparse_polynomial<IT> sheared(const Equation& e, const std::vector<double>& c, const std::vector<double>& s,
-                                  const std::vector<double>& g, std::size_t p) const
+    // multiplied out in interval arithmetic. Empty above total degree 30, where a multinomial
+    // coefficient as a double may no longer be exact.
+    std::optional<Sparse_polynomial<IT>> sheared(const Equation& e, const std::vector<double>& c, const std::vector<double>& s,
+                                                 const std::vector<double>& g, std::size_t p) const
     {
       const Shape& sh = e.shape;
       const std::size_t m = sh.variables.size();
@@ -682,6 +701,7 @@ private:
         for (std::size_t k = 0; k < m; ++k) t += unsigned((a / sh.strides[k]) % (sh.degrees[k] + 1));
         total = (std::max)(total, t);
       }
+      if (total > 30) return std::nullopt;
       for (unsigned d : sh.degrees) top = (std::max)(top, d);
       // the target: x's variables and y_p; y_p of the total degree
       std::vector<std::size_t> tv = sh.variables;
