@@ -161,7 +161,7 @@ struct Solver_statistics
   std::size_t precision_retries = 0;///< clusters of unknown boxes solved again (at a higher precision, or at the working precision down to the minimal width)
   std::size_t maximal_depth = 0;    ///< deepest subdivision level
   std::size_t oriented_solves = 0;  ///< boxes solved in sheared coordinates (`Subdivision_solver_parameters::oriented_boxes`; their boxes are counted in `boxes`)
-  std::size_t oriented_fallbacks = 0; ///< of those, the ones that left something unresolved and were subdivided as usual
+  std::size_t oriented_fallbacks = 0; ///< of those, the ones that left something unresolved, exceeded `maximal_coefficients` or had a root not certified again in the original variables, and were subdivided as usual
   double seconds = 0;               ///< wall-clock time of the solve
 };
 
