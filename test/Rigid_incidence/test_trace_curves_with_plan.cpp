@@ -110,8 +110,8 @@ static void check_jansen(const std::string& file, bool with_inequalities)
   CHECK(plan.blocks().size() == 6 && plan.blocks()[0].variables.size() == 2, file << ": the plan is the crank, then one point at a time");
   auto r = RI::trace_curves_with_plan<IT>(sys, plan);
   std::cout << file << ": " << r.curves.size() << " branch(es), " << r.unresolved.size() << " unresolved, " << r.statistics.boxes << " boxes, "
-            << r.statistics.block_solves << " block solves, " << r.statistics.pieces << " pieces, " << r.statistics.fold_traces << " fold traces, "
-            << r.statistics.lifted_arcs << " arcs lifted, " << r.statistics.coarse_solves << " coarser block solves, " << r.statistics.seconds << " s\n";
+            << r.statistics.block_solves << " block solves (" << r.statistics.kept_solves << " more kept from halved pieces), " << r.statistics.pieces
+            << " pieces, " << r.statistics.fold_traces << " fold traces, " << r.statistics.lifted_arcs << " arcs lifted, " << r.statistics.coarse_solves << " coarser block solves, " << r.statistics.seconds << " s\n";
   CHECK(r.complete(), file << ": complete");
   if (with_inequalities) CHECK(r.curves.size() == 1 && r.curves[0].closed && r.curves[0].certified, file << ": one certified closed branch");
   for (const auto& c : r.curves) CHECK(c.certified && c.closed, file << ": every branch certified and closed (the crank turns fully)");

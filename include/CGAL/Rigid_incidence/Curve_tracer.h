@@ -133,6 +133,7 @@ struct Curve_statistics
   std::size_t unmatched = 0;          ///< crossings that could not be matched across a face
   std::size_t block_solves = 0;       ///< `trace_curves_with_plan()`: square blocks solved over pieces of the curve block
   std::size_t pieces = 0;             ///< `trace_curves_with_plan()`: pieces of the curve block lifted (halvings included)
+  std::size_t kept_solves = 0;        ///< `trace_curves_with_plan()`: block solves over a halved piece that settled a group of lifts over one of its halves, instead of a solve
   std::size_t fold_traces = 0;        ///< `trace_curves_with_plan()`: whole-system traces around pieces that could not be lifted
   std::size_t coarse_solves = 0;      ///< `trace_curves_with_plan()`: block solves around folds repeated with a coarser minimal width (`Plan_trace_parameters::block_boxes`)
   std::size_t lifted_arcs = 0;        ///< `trace_curves_with_plan()`: arcs over runs of failed pieces proved by their certified enclosures, not traced
