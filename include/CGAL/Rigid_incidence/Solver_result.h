@@ -87,9 +87,12 @@ struct Subdivision_solver_parameters
   /// once in sheared coordinates, one of whose axes follows the Jacobian's near-null direction
   /// (see the user manual); the box falls back to ordinary subdivision when that solve leaves
   /// anything unresolved, and the solver stops trying after 8 such solves once half of them
-  /// fell back. Needs the preconditioning; not used with inequalities or in the fast mode (where
+  /// fell back. Needs the preconditioning; not used with inequalities, in the fast mode (where
   /// a root of the sheared solve cannot be accepted without its proof: 24 of the Stewart-Gough
-  /// platform's 162 sheared solves fell back there, and the fast solve took longer).
+  /// platform's 162 sheared solves fell back there, and the fast solve took longer), or when a
+  /// coefficient is wider than 1e-9 of its equation's largest (a block of a plan whose inputs
+  /// are boxes: the tube is then as wide as the coefficients make it; on Jansen's linkage the
+  /// sheared solves of its block solves took a fifth of the time for nothing).
   bool oriented_boxes = true;
   /// Stop once the unknown boxes show a curve of solutions (a chain of at least this many
   /// touching rank-deficient boxes spanning 100 singular widths): the rest is `PENDING` with

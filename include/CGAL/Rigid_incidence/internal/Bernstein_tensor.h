@@ -56,6 +56,14 @@ struct Tensor_shape
   }
 };
 
+// The binomial coefficient C(n, k), exact for the degrees of the solver's equations.
+inline double binomial(unsigned n, unsigned k)
+{
+  double r = 1;
+  for (unsigned t = 1; t <= k; ++t) r = r * (n - k + t) / t;
+  return r;
+}
+
 // C(i, j) / C(d, j) as an interval (the power -> Bernstein matrix).
 template <class IT> IT binomial_ratio(unsigned i, unsigned j, unsigned d)
 {
@@ -70,14 +78,19 @@ template <class IT> IT binomial_ratio(unsigned i, unsigned j, unsigned d)
 template <class IT>
 std::vector<IT> to_bernstein(const Tensor_shape& s, std::vector<IT> a, const std::vector<IT>& lo, const std::vector<IT>& width)
 {
-  std::vector<IT> f;
+  std::vector<IT> f, ratio;
   for (std::size_t j = 0; j < s.variables.size(); ++j) {
     const unsigned d = s.degrees[j];
     if (d == 0) continue;
     const std::size_t st = s.strides[j];
-    std::vector<std::vector<IT>> ratio(d + 1);
+    // C(i, k) / C(d, k), row i: one division where it is not 1 (the solver converts small
+    // arrays on every box of a system with interval coefficients)
+    ratio.resize((d + 1) * (d + 1));
     for (unsigned i = 0; i <= d; ++i)
-      for (unsigned k = 0; k <= i; ++k) ratio[i].push_back(binomial_ratio<IT>(i, k, d));
+      for (unsigned k = 0; k <= i; ++k) {
+        const double num = binomial(i, k), den = binomial(d, k);
+        ratio[i * (d + 1) + k] = num == den ? IT(1) : d <= 50 ? IT(num) / IT(den) : binomial_ratio<IT>(i, k, d);
+      }
     f.resize(d + 1);
     s.for_each_fiber(j, [&](std::size_t base) {
       for (unsigned i = 0; i <= d; ++i) f[i] = a[base + i * st];
@@ -90,7 +103,7 @@ std::vector<IT> to_bernstein(const Tensor_shape& s, std::vector<IT> a, const std
       // power -> Bernstein: b_i = sum_{k<=i} C(i,k)/C(d,k) f_k
       for (unsigned i = 0; i <= d; ++i) {
         IT b(0);
-        for (unsigned k = 0; k <= i; ++k) b = b + ratio[i][k] * f[k];
+        for (unsigned k = 0; k <= i; ++k) b = b + ratio[i * (d + 1) + k] * f[k];
         a[base + i * st] = b;
       }
     });
@@ -135,14 +148,6 @@ std::vector<IT> restrict_axis(const Tensor_shape& s, const std::vector<IT>& b, s
   if (!tv_one) { split(s, cur, j, tv, l, r); cur.swap(l); }
   if (!tu_zero) { split(s, cur, j, tu / tv, l, r); cur.swap(r); }
   return cur;
-}
-
-// The binomial coefficient C(n, k), exact for the degrees of the solver's equations.
-inline double binomial(unsigned n, unsigned k)
-{
-  double r = 1;
-  for (unsigned t = 1; t <= k; ++t) r = r * (n - k + t) / t;
-  return r;
 }
 
 // How to write an array of shape `from` over the variables and degrees of `to` (a superset
