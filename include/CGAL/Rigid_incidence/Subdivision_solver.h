@@ -131,6 +131,7 @@ private:
     std::vector<std::vector<IT>> b;      // per equation, Bernstein array on [lo, hi]
     std::size_t depth = 0;
     bool no_shear = false;               // a solve in sheared coordinates failed on it or an ancestor
+    bool stale = false;                  // b not made by the split: converted afresh when processed
   };
 
   struct Found
@@ -503,10 +504,16 @@ private:
     void process(Node& x, std::vector<Node>& stack)
     {
       if (!ineq.empty() && violates_inequality(x.lo, x.hi)) { ++result.statistics.excluded_by_inequality; return; }
+      const bool fresh = x.stale;
+      if (x.stale) {
+        x.b.resize(n);
+        for (std::size_t i = 0; i < n; ++i) x.b[i] = bernstein(eq[i], x.lo, x.hi);
+        x.stale = false;
+      }
       bool converging = false;
       for (int round = 0; round < 32; ++round) {
         if (excluded(x)) { ++result.statistics.excluded; return; }
-        if (round == 0 && x.depth > 0 && blurred(x)) {
+        if (round == 0 && x.depth > 0 && !fresh && blurred(x)) {
           // the subdivided arrays carry the rounding of every level above: convert the
           // equations afresh on this box, which is exact up to one rounding per operation
           // (with wide coefficients too, where it is not the rounding: Jansen's linkage took
@@ -774,6 +781,12 @@ private:
       r.lo = x.lo; r.hi = x.hi; r.lo[j] = m;
       l.depth = r.depth = x.depth + 1;
       l.no_shear = r.no_shear = x.no_shear;
+      if (wide_coefficients) {
+        // the halves' arrays would be blurred by the coefficients' widths (see process()):
+        // converted afresh there, not subdivided here
+        l.stale = r.stale = true;
+        return;
+      }
       l.b.resize(n);
       r.b.resize(n);
       for (std::size_t i = 0; i < n; ++i) {

@@ -209,19 +209,27 @@ template <class IT, class NT> struct Plan_trace_run
       for (std::size_t j = 0; j < m; ++j) xU[Y[j]] = I(x[Y[j]] - r[j], x[Y[j]] + r[j]);
       bool inside = true;
       std::vector<I> K(m);
+      // the interval derivatives over (U, X), once for all rows
+      std::vector<I> FY(m * m, I(0)), FP(m * P.size(), I(0));
+      for (std::size_t i = 0; i < m; ++i) {
+        for (std::size_t l = 0; l < m; ++l)
+          if (uses[E[i]][Y[l]]) FY[i * m + l] = DI[E[i]][Y[l]].evaluate(xU);
+        for (std::size_t q = 0; q < P.size(); ++q)
+          if (uses[E[i]][P[q]]) FP[i * P.size() + q] = DI[E[i]][P[q]].evaluate(xU);
+      }
       for (std::size_t j = 0; j < m; ++j) {
         I k = I(x[Y[j]]);
         for (std::size_t i = 0; i < m; ++i) k -= I(Yi(long(j), long(i))) * g[i];
         for (std::size_t q = 0; q < P.size(); ++q) {
           I s(0);
           for (std::size_t i = 0; i < m; ++i)
-            if (uses[E[i]][P[q]]) s += I(Yi(long(j), long(i))) * DI[E[i]][P[q]].evaluate(xU);
+            if (uses[E[i]][P[q]]) s += I(Yi(long(j), long(i))) * FP[i * P.size() + q];
           k -= s * (U[q] - I(x[P[q]]));
         }
         for (std::size_t l = 0; l < m; ++l) {
           I s(l == j ? 1 : 0);
           for (std::size_t i = 0; i < m; ++i)
-            if (uses[E[i]][Y[l]]) s -= I(Yi(long(j), long(i))) * DI[E[i]][Y[l]].evaluate(xU);
+            if (uses[E[i]][Y[l]]) s -= I(Yi(long(j), long(i))) * FY[i * m + l];
           k += s * I(-r[l], r[l]);
         }
         K[j] = k;
