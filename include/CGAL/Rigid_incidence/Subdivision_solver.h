@@ -940,7 +940,7 @@ private:
     {
       // interval Jacobian: the Bernstein differences (tight on large boxes) intersected with
       // the derivatives evaluated in interval arithmetic (no division by a tiny width); without
-      // arrays (b empty: tighten()'s small boxes) the evaluations alone
+      // arrays (b empty: tighten() first) the evaluations alone
       const bool arrays = !b.empty();
       std::vector<std::vector<IT>> J(n, std::vector<IT>(n, IT(0)));
       Matrix Jm = Matrix::Zero(n, n);
@@ -1157,24 +1157,35 @@ private:
     void tighten(std::vector<Bound>& zlo, std::vector<Bound>& zhi)
     {
       double w = max_width(zlo, zhi);
-      const std::vector<std::vector<IT>> b;  // (small boxes: the Jacobian from evaluations)
-      double step = 0;                       // the last iteration's shrinking
+      // the Jacobian from the derivatives' evaluations first (no arrays to convert); where that
+      // does not contract (a Krawczyk box still wide), from the Bernstein arrays as well
+      bool arrays = false;
+      double step = 0;  // the last iteration's shrinking
       for (int it = 0; it < 64 && w > P.tolerance; ++it) {
+        std::vector<std::vector<IT>> b;
+        if (arrays)
+          for (const auto& e : eq) b.push_back(bernstein(e, zlo, zhi));
         std::vector<IT> K;
         bool inside, empty;
-        if (!krawczyk(zlo, zhi, b, K, inside, empty) || empty) break;
+        if (!krawczyk(zlo, zhi, b, K, inside, empty) || empty) {
+          if (!arrays) { arrays = true; continue; }
+          break;
+        }
         for (std::size_t j = 0; j < n; ++j) {
           if (zlo[j] < O::lower(K[j])) zlo[j] = O::lower(K[j]);
           if (O::upper(K[j]) < zhi[j]) zhi[j] = O::upper(K[j]);
         }
         double nw = max_width(zlo, zhi);
-        if (!(nw < w)) break;  // no progress: the precision is exhausted
+        if (!(nw < w)) {  // no progress: the precision is exhausted, or the Jacobian is too loose
+          if (!arrays) { arrays = true; continue; }
+          break;
+        }
         // With interval coefficients (a block's inputs are boxes) the enclosures tend to a box
         // as wide as the coefficients make it, at a linear rate: the shrinking steps form a
         // geometric series, and once the rest of it is below a tenth of the width the rest is
         // not worth the iterations (on Jansen's linkage 10 per root on average, many up to 64)
         const double d = w - nw;
-        if (step > 0 && d < step) {
+        if (wide_coefficients && step > 0 && d < step) {
           const double rho = d / step;
           if (d * rho / (1 - rho) < 0.1 * nw) break;
         }

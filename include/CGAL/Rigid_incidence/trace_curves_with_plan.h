@@ -611,19 +611,24 @@ template <class IT, class NT> struct Plan_trace_run
         // halves) says where its roots lie for these inputs too: tried first, and solved afresh
         // if the lifts do not match it (its root boxes are wider)
         bool settled = false;
+        std::vector<const Lift*> near_boundary;
         if (const Solver_result<IT>* kept = kept_solve(b, L, known)) {
           const bool missed = lifts_missed;
           std::string w;
-          settled = check_group(b, L, known, *kept, same, members, w);
+          settled = check_group(b, L, known, *kept, same, members, w, near_boundary);
           lifts_missed = missed;
           if (settled) ++kept_solves;
         }
         if (!settled) {
+          near_boundary.clear();
           Solver_result<IT> res = solve_block(b, L, known);
           if (res.unresolved.empty() && std::all_of(res.roots.begin(), res.roots.end(), [](const Solver_root<IT>& r) { return r.certified; }))
             recent.push_back(Kept_solve{b, L, res});
-          if (!check_group(b, L, known, res, same, members, why)) return false;
+          if (!check_group(b, L, known, res, same, members, why, near_boundary)) return false;
         }
+        // a lift whose root may meet an inequality's zero over the piece is marked, as lift_box()
+        // marks one at a point
+        for (const Lift* S : near_boundary) out[std::size_t(S - out.data())].inequality_boundary = true;
       }
       for (std::size_t j : blk.variables) known[j] = 1;
     }
@@ -643,7 +648,8 @@ template <class IT, class NT> struct Plan_trace_run
   std::size_t kept_solves = 0;
   const Solver_result<IT>* kept_solve(std::size_t b, const Lift& L, const std::vector<char>& known) const
   {
-    for (const Kept_solve& k : kept) {
+    for (auto it = kept.rbegin(); it != kept.rend(); ++it) {  // the newest first: the narrowest
+      const Kept_solve& k = *it;
       if (k.b != b) continue;
       bool in = true;
       for (std::size_t j = 0; j < n && in; ++j)
@@ -655,8 +661,10 @@ template <class IT, class NT> struct Plan_trace_run
 
   // lift_piece(): block b solved (`res`) over the inputs L of the group `members` of lifts
   // (`same`: one per root of block b among them) accounts for their roots and no others
+  // (`near_boundary` gets the members whose root box over the piece meets an inequality's zero)
   bool check_group(std::size_t b, const Lift& L, const std::vector<char>& known, const Solver_result<IT>& res,
-                   const std::vector<const Lift*>& same, const std::vector<const Lift*>& members, std::string& why)
+                   const std::vector<const Lift*>& same, const std::vector<const Lift*>& members, std::string& why,
+                   std::vector<const Lift*>& near_boundary)
   {
     const Plan_block& blk = blocks[b];
     for (const auto& u : res.unresolved) {  // no lift's root: fine if nothing in it continues
@@ -698,6 +706,7 @@ template <class IT, class NT> struct Plan_trace_run
       for (std::size_t t = 0; t < same.size(); ++t)
         if (same[t]->path[b - 1] == S->path[b - 1]) r = t;
       if (r == same.size() || root_of[r] != which) return fail_on_lifts(why, block_name(b) + " over the piece: lifts with one path meet several roots");
+      if (res.roots[which].on_inequality_boundary) near_boundary.push_back(S);
     }
     return true;
   }

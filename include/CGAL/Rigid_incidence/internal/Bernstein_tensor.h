@@ -88,8 +88,8 @@ std::vector<IT> to_bernstein(const Tensor_shape& s, std::vector<IT> a, const std
     ratio.resize((d + 1) * (d + 1));
     for (unsigned i = 0; i <= d; ++i)
       for (unsigned k = 0; k <= i; ++k) {
-        const double num = binomial(i, k), den = binomial(d, k);
-        ratio[i * (d + 1) + k] = num == den ? IT(1) : d <= 50 ? IT(num) / IT(den) : binomial_ratio<IT>(i, k, d);
+        // (binomial() is exact up to degree 50)
+        ratio[i * (d + 1) + k] = k == 0 || i == d ? IT(1) : d <= 50 ? IT(binomial(i, k)) / IT(binomial(d, k)) : binomial_ratio<IT>(i, k, d);
       }
     f.resize(d + 1);
     s.for_each_fiber(j, [&](std::size_t base) {
