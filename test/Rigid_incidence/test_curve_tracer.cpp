@@ -13,6 +13,9 @@
 //    that must lie near the traced polylines, and every polyline point on the curve;
 //  - the paper's four-bar (a parallelogram linkage) with and without its two inequalities;
 //  - an inequality clipping a circle; CGAL::Gmpfi intervals; interval coefficients;
+//  - curves leaving the box through its edges and corners (a line through the square's corners,
+//    exactly and 1e-17 or 1e-13 beside; through two edges of the cube): one certified branch
+//    each, the crossing counted once; a circle meeting the square in its corners only: unresolved;
 //  - malformed input throws Input_error.
 
 #include "test_check.h"
@@ -373,9 +376,64 @@ static void inequality_and_types()
   CHECK(throws(plane({x}, -1, std::numeric_limits<double>::infinity(), -1, 1)), "infinite box throws");
 }
 
+// Curves that leave the search box through its edges or corners: each crossing there is found
+// on every face that meets at it, and must be counted once (it was left unresolved, "crossing
+// at a box edge"). The line z = x through the square's corners, and its parallel 1e-17 and
+// 1e-13 away (exact coefficients: through the corner in double precision, beside it in fact);
+// the line z = x, y = 1/2 through two edges of the cube; the circle x^2 + z^2 = 8 meets the
+// square in its 4 corners only: isolated points, never a branch.
+static void box_edges()
+{
+  P x = P::variable(2, 0), z = P::variable(2, 1), one = P::constant(2, 1);
+  const std::vector<std::pair<Q, std::string>> offsets = {{Q(0), "z = x"}, {Q(1) / Q(std::string("100000000000000000")), "z = x + 1e-17"},
+                                                          {Q(1) / Q(std::string("10000000000000")), "z = x + 1e-13"}};
+  for (const auto& o : offsets)
+    for (int sign = 1; sign >= -1; sign -= 2) {
+      const std::string name = sign > 0 ? o.second : o.second + ", mirrored (z = -x ...)";
+      auto r = RI::trace_curves(plane({z - Q(sign) * x - o.first * one}, -2, 2, -2, 2));
+      CHECK(r.complete() && r.curves.size() == 1, name << ": complete, " << r.curves.size() << " branches, " << r.unresolved.size() << " regions");
+      for (const auto& c : r.curves) {
+        CHECK(c.certified && !c.closed && c.ends[0] == RI::Curve_end::BOUNDARY && c.ends[1] == RI::Curve_end::BOUNDARY, name << ": one certified branch between two corners");
+        const Pt& a = c.points.front();
+        const Pt& b = c.points.back();
+        CHECK(std::abs(std::abs(a[0]) - 2) < 1e-9 && std::abs(std::abs(b[0]) - 2) < 1e-9 && a[0] * b[0] < 0 && std::abs(a[1] - sign * a[0]) < 1e-9 &&
+                  std::abs(b[1] - sign * b[0]) < 1e-9,
+              name << ": ends at (" << a[0] << ", " << a[1] << ") and (" << b[0] << ", " << b[1] << ")");
+      }
+      std::vector<Pt> truth;
+      for (int k = 0; k <= 400; ++k) truth.push_back({-2 + k / 100.0, sign * (-2 + k / 100.0)});
+      check_points(r, truth, 1e-6, name);
+    }
+  {  // through two edges of the cube [-2, 2]^3, at y = 1/2
+    RI::Polynomial_system<Q> s;
+    s.variable_names = {"x", "y", "z"};
+    s.box = {{-2, 2}, {-2, 2}, {-2, 2}};
+    P x3 = P::variable(3, 0), y3 = P::variable(3, 1), z3 = P::variable(3, 2), one3 = P::constant(3, 1);
+    s.equations = {z3 - x3, y3 - Q(1, 2) * one3};
+    auto r = RI::trace_curves(s);
+    CHECK(r.complete() && r.curves.size() == 1, "z = x, y = 1/2 in the cube: complete, " << r.curves.size() << " branches");
+    for (const auto& c : r.curves)
+      CHECK(c.certified && c.ends[0] == RI::Curve_end::BOUNDARY && c.ends[1] == RI::Curve_end::BOUNDARY &&
+                std::abs(std::abs(c.points.front()[0]) - 2) < 1e-9 && std::abs(std::abs(c.points.back()[0]) - 2) < 1e-9,
+            "z = x, y = 1/2 in the cube: one certified branch between two edges");
+  }
+  {  // x^2 + z^2 = 8 meets the square [-2, 2]^2 in its corners only
+    auto r = RI::trace_curves(plane({circle(0, 0, 8)}, -2, 2, -2, 2));
+    CHECK(!r.complete() && r.unresolved.size() == 4, "circle through the corners: " << r.unresolved.size() << " regions, complete " << r.complete());
+    for (const auto& c : r.curves) CHECK(!c.certified, "circle through the corners: no certified branch");
+    for (int cx = -1; cx <= 1; cx += 2)
+      for (int cz = -1; cz <= 1; cz += 2) {
+        bool found = false;
+        for (const auto& u : r.unresolved) found = found || in_region(Pt{2.0 * cx, 2.0 * cz}, u, 1e-9);
+        CHECK(found, "circle through the corners: the corner (" << 2 * cx << ", " << 2 * cz << ") is in an unresolved region");
+      }
+  }
+}
+
 int main()
 {
   circles();
+  box_edges();
   singular();
   four_bar(1, 3, 3, 4, 2, false);  // Grashof crank-rocker: 1 + 4 < 3 + 3, two circuits
   four_bar(4, 6, 5, 8, 1, false);  // non-Grashof: 4 + 8 > 6 + 5, one circuit

@@ -23,6 +23,9 @@
 //    falls back to plain subdivision: the fallback must not lose the root either); and with
 //    maximal_coefficients just above what the system needs, the larger sheared system must
 //    fall back, not throw out of solve() (found by a review).
+//  - random system #2488 of seed 99 (4 variables, two cubics): tightening must fall back on the
+//    Bernstein arrays' Jacobian where the evaluations' one does not contract (every planted root
+//    in exactly one certified enclosure at most 1e-11 wide; it stayed 0.08 wide).
 
 #include "test_check.h"
 
@@ -274,9 +277,59 @@ template <class IT> static void ill_conditioned_tube(const std::string& type)
   }
 }
 
+// Random system #2488 of `test_subdivision_solver_random 6000 99` (planted_systems.h: 4
+// variables, two linear and two cubic equations, new coordinates) and its 6 planted roots in the
+// box. Tightening a certified root by the Krawczyk operator with the Jacobian from the
+// derivatives' evaluations alone stopped there with an enclosure 0.08 wide: the Bernstein
+// arrays' Jacobian must be used where that one does not contract (found by a review).
+static const char* random_2488 = R"(4
+(7/8)*x0 + (-2/1)*x1 + (-3/4)*x2 + (-2/1)*x3 + (371/264);
+(1155/1024)*x0^3 + (51607/6912)*x0^2*x1 + (-163/384)*x0^2*x2 + (-275311/27648)*x0^2*x3 + (198330535/11031552)*x0^2 + (2219/144)*x0*x1^2 + (-3025/1728)*x0*x1*x2 + (-34435/864)*x0*x1*x3 + (1300703689/18960480)*x0*x1 + (-43/192)*x0*x2^2 + (-4031/6912)*x0*x2*x3 + (373939001/151683840)*x0*x2 + (124277/6912)*x0*x3^2 + (-3954459767/75841920)*x0*x3 + (100418063513/3185360640)*x0 + (10/1)*x1^3 + (-79/36)*x1^2*x2 + (-362/9)*x1^2*x3 + (5325233/79002)*x1^2 + (-17/27)*x1*x2^2 + (-91/54)*x1*x2*x3 + (26419711/4740120)*x1*x2 + (7601/216)*x1*x3^2 + (-6319573/62370)*x1*x3 + (6339950681/99542520)*x1 + (1/12)*x2^3 + (439/216)*x2^2*x3 + (-2583299/592515)*x2^2 + (19973/1728)*x2*x3^2 + (-485421967/9480240)*x2*x3 + (44344738451/796340160)*x2 + (1885/216)*x3^3 + (-534212587/6320160)*x3^2 + (3763478681/16590420)*x3 + (-219346114717/1194510240);
+(5/24)*x0 + (-3/2)*x1 + (7/12)*x2 + (17/12)*x3 + (-1277/1170);
+(9/256)*x0^3 + (15/64)*x0^2*x1 + (15/256)*x0^2*x2 + (3/64)*x0^2*x3 + (8193/21760)*x0^2 + (1/4)*x0*x1^2 + (5/16)*x0*x1*x2 + (19/16)*x0*x1*x3 + (3841/4760)*x0*x1 + (15/64)*x0*x2*x3 + (-125/22848)*x0*x2 + (-3/2)*x0*x3^2 + (483673/114240)*x0*x3 + (-102041/68544)*x0 + (2/1)*x1^2*x3 + (-34/21)*x1^2 + (5/2)*x1*x2*x3 + (-85/42)*x1*x2 + (-11/2)*x1*x3^2 + (82291/3570)*x1*x3 + (-11066/735)*x1 + (-15/8)*x2*x3^2 + (230/51)*x2*x3 + (-8545/3528)*x2 + (3/1)*x3^3 + (-276593/14280)*x3^2 + (413677/12495)*x3 + (-5815727/370440);
+
+box x0 -6.5 2.5
+box x1 -2 1.125
+box x2 -4.875 -1
+box x3 -0.25 3.25
+)";
+static const char* random_2488_roots[6][4] = {
+  {"-9970729/1696695", "-268748059/156095940", "-8845147/7804797", "3620489/13007995"},
+  {"-7664408/2375373", "-235938613/237537300", "-294093991/118768650", "960324/791791"},
+  {"-55229848/28843815", "-9958453/16482180", "-89184541/57687630", "30253486/28843815"},
+  {"-1134091/2747030", "-31522033/153833680", "-3370031/1098812", "33317873/17750040"},
+  {"201195622/96711615", "8670169373/17794937160", "-17569636199/4448734290", "2108371457/808860780"},
+  {"187501616866/86041100145", "87154752283/172082200290", "-40242327319/9056957910", "161516521129/57360733430"}};
+
+static void tightening_fallback()
+{
+  std::istringstream in(random_2488);
+  RI::Polynomial_system_file f = RI::read_polynomial_system(in);
+  RI::Solver_result<I> r = RI::Subdivision_solver<I>().solve(f.system);
+  CHECK(r.complete() && r.roots.size() == 6, "random #2488 of seed 99: " << r.roots.size() << " roots, complete " << r.complete());
+  std::vector<int> hits(6, 0);
+  for (const auto& x : r.roots) {
+    int inside = 0;
+    for (std::size_t k = 0; k < 6; ++k) {
+      bool in_box = true;
+      for (std::size_t j = 0; j < 4; ++j) {
+        const Q v(random_2488_roots[k][j]);
+        in_box = in_box && Q(x.enclosure[j].inf()) <= v && v <= Q(x.enclosure[j].sup());
+      }
+      if (in_box) { ++inside; ++hits[k]; }
+    }
+    double w = 0;
+    for (const auto& e : x.enclosure) w = (std::max)(w, e.sup() - e.inf());
+    CHECK(x.certified && inside == 1, "random #2488 of seed 99: a certified enclosure holds " << inside << " planted roots");
+    CHECK(w <= 1e-11, "random #2488 of seed 99: a certified enclosure " << w << " wide (tolerance 1e-12)");
+  }
+  for (std::size_t k = 0; k < 6; ++k) CHECK(hits[k] == 1, "random #2488 of seed 99: planted root " << k << " in " << hits[k] << " enclosures");
+}
+
 int main()
 {
   storage_limit();
+  tightening_fallback();
   many_variables();
   ill_conditioned_tube<I>("Interval_nt");
 #ifdef CGAL_USE_MPFI

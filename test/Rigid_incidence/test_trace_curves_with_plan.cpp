@@ -16,6 +16,10 @@
 //  - A curve block after square blocks (a = +-sqrt(2), the circle of radius |a|, z = x y; and
 //    b = +-sqrt(3) besides, merged with the curve block or lifted after it, with an inequality
 //    that needs b): one certified loop per root kept, against the closed form.
+//  - An inequality of the curve block: a circle over the line z = x cut by z >= 1/2 (one
+//    certified branch ending at the inequality on both sides, flagged; also in the cube, whose
+//    corners the line goes through) and clear of z >= -1.01 (one closed loop, not flagged
+//    although block 0's line meets the inequality's zero).
 //  - Plans of the wrong form are refused.
 
 #include <CGAL/Interval_nt.h>
@@ -324,6 +328,45 @@ int main(int argc, char** argv)
       double xmin = 1e9, ymin = 1e9, ymax = -1e9;
       for (const auto& p : c.points) { xmin = (std::min)(xmin, p[0]); ymin = (std::min)(ymin, p[1]); ymax = (std::max)(ymax, p[1]); }
       CHECK(xmin > 0.5 - 1e-9 && xmin < 0.5 + 1e-3 && ymax > 0.86 && ymin < -0.86, "one fold pair: the loop spans the arc x >= 1/2 up to its ends (y = +-sqrt(3)/2)");
+    }
+  }
+  {  // an inequality of the curve block (z = x, then y from the circle): z >= 1/2 cuts the
+     // lifted circle at x = 1/2, so one certified branch with both ends at the inequality,
+     // flagged; z >= -1.01 never meets it (block 0's line does, at x = -1.01, beyond the
+     // circle): one closed certified loop, not flagged (it was, from block 0's flag, before
+     // the flag was restricted to the pieces where the inequality may vanish). With z in
+     // [-3, 3], and in the cube [-2, 2]^3, where block 0's line leaves the box through its
+     // corners (it was left unresolved there, "crossing at a box edge").
+    for (int variant = 0; variant < 3; ++variant) {
+      const bool cut = variant > 0;
+      auto s = system_of(std::string("2 3\nx^2 + y^2 - 1;\nz - x;\nbox * -2 2\n") + (variant < 2 ? "box z -3 3\n" : "") + "inequality z " +
+                         (cut ? "- 1/2" : "+ 101/100") + " >= 0;\n");
+      const std::string name = std::string(cut ? "circle cut by z >= 1/2" : "circle clear of z >= -1.01") + (variant == 2 ? " in the cube" : "");
+      RI::Solution_plan plan(s);
+      CHECK(plan.blocks().size() == 2 && plan.blocks()[0].inequalities.size() == 1, name << ": the inequality belongs to the curve block");
+      auto r = RI::trace_curves_with_plan<IT>(s, plan);
+      CHECK(r.complete() && r.curves.size() == 1, name << ": complete, " << r.curves.size() << " branches, " << r.unresolved.size() << " regions");
+      for (const auto& c : r.curves) {
+        CHECK(c.certified && c.max_residual < 1e-9, name << ": a certified branch, residual " << c.max_residual);
+        double xmin = 1e9, worst = 0;
+        for (const auto& p : c.points) {
+          xmin = (std::min)(xmin, p[0]);
+          worst = (std::max)(worst, (std::max)(std::abs(p[0] * p[0] + p[1] * p[1] - 1), std::abs(p[2] - p[0])));
+        }
+        CHECK(worst < 1e-9, name << ": a point " << worst << " off the closed form");
+        if (cut) {
+          CHECK(!c.closed && c.ends[0] == RI::Curve_end::INEQUALITY && c.ends[1] == RI::Curve_end::INEQUALITY, name << ": both ends at the inequality");
+          CHECK(c.on_inequality_boundary, name << ": flagged on the inequality's boundary");
+          CHECK(xmin > 0.5 - 1e-5, name << ": the branch stays where z >= 1/2 (x min " << xmin << ")");
+          for (int e = 0; e < 2; ++e) {
+            const auto& p = e ? c.points.back() : c.points.front();
+            CHECK(std::abs(p[0] - 0.5) < 1e-5 && std::abs(std::abs(p[1]) - std::sqrt(0.75)) < 1e-5, name << ": an end at (" << p[0] << ", " << p[1] << ")");
+          }
+        } else {
+          CHECK(c.closed && !c.on_inequality_boundary, name << ": a closed loop, not flagged (" << c.on_inequality_boundary << ")");
+          CHECK(xmin < -1 + 1e-3, name << ": the loop goes round to x = -1 (x min " << xmin << ")");
+        }
+      }
     }
   }
   {  // plans of the wrong form

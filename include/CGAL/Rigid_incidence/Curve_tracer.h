@@ -259,6 +259,7 @@ public:
     bool entry = false;         // entry in increasing x_j
     bool sign_known = false;    // `entry` is proved (else it follows from the order)
     bool dropped = false;       // its arc is left out: an inequality is < 0 along it
+    bool at_edge = false;       // at an edge or corner of the search box (found on each face there)
     std::size_t node = 0;       // index in the leaf's crossing list -> global id
   };
   struct Arc
@@ -753,8 +754,26 @@ private:
         }
         if (!r.complete()) { why = "crossings not certified"; return false; }
         for (const auto& root : r.roots) {
-          if (root.on_boundary) { why = "crossing at a box edge"; return false; }
+          // A crossing at an edge of the box: inside the search box, an edge a split moves (or
+          // leaves unresolved at the minimal width). An edge of the search box itself stays, and
+          // a curve may leave through it (z = x leaves the cube [-2, 2]^3 through its edges
+          // x = z = +-2): such a crossing is an end of the curve, found on each of the faces
+          // that meet there, and counted once.
+          bool at_edge = false;
+          if (root.on_boundary) {
+            bool outer = search_face(B, i, side);
+            for (std::size_t v = 0, w = 0; v < n && outer; ++v) {
+              if (v == i) continue;
+              const IT& e = root.enclosure[w];
+              if (!(f.box[w].first < O::lower_double(e)) && !search_face(B, v, 0)) outer = false;
+              if (!(O::upper_double(e) < f.box[w].second) && !search_face(B, v, 1)) outer = false;
+              ++w;
+            }
+            if (!outer) { why = "crossing at a box edge"; return false; }
+            at_edge = true;
+          }
           Crossing x;
+          x.at_edge = at_edge;
           x.face_variable = i;
           x.upper = side == 1;
           for (std::size_t v = 0, w = 0; v < n; ++v) {
@@ -781,10 +800,19 @@ private:
             // moving in +x_j, x_i grows if ui > 0: into the box through its lower face
             x.entry = certainly_positive(ui) != x.upper;
           }
-          found.push_back(x);
+          bool seen = false;  // on another face of the edge already
+          if (at_edge)
+            for (const Crossing& y : found) seen = seen || (y.at_edge && meet(y.enclosure, x.enclosure));
+          if (!seen) found.push_back(x);
         }
       }
     return true;
+  }
+
+  // B's lower (side 0) or upper (side 1) face in x_v lies on the search box's
+  bool search_face(const Box& B, std::size_t v, int side) const
+  {
+    return side ? !(O::to_double(B.hi[v]) < sys.box[v].second) : !(sys.box[v].first < O::to_double(B.lo[v]));
   }
 
   // the point of the curve on the slice x_j = x[j] in the box, by Newton from x

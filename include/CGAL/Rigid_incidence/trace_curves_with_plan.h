@@ -137,6 +137,21 @@ template <class IT, class NT> struct Plan_trace_run
     }
   }
 
+  // Some inequality of block 0 may be 0 over a piece: its range over block 0's enclosure X0 of
+  // the piece (over v0) contains 0. Block 0's curve says only that it meets such a zero
+  // somewhere; a branch lifted over pieces away from there does not.
+  bool block0_inequality_boundary(const std::vector<I>& X0) const
+  {
+    CGAL::Protect_FPU_rounding<true> guard;
+    std::vector<I> x(n, I(0));
+    for (std::size_t k = 0; k < v0.size() && k < X0.size(); ++k) x[v0[k]] = X0[k];
+    for (std::size_t q : blocks[0].inequalities) {
+      const I v = GI[q].evaluate(x);
+      if (v.inf() <= 0 && v.sup() >= 0) return true;
+    }
+    return false;
+  }
+
   // f with its coefficients in T: rounded to double, or enclosed in an interval
   template <class T> static Sparse_polynomial<T> converted(const Sparse_polynomial<NT>& f)
   {
@@ -612,17 +627,18 @@ template <class IT, class NT> struct Plan_trace_run
         // if the lifts do not match it (its root boxes are wider)
         bool settled = false;
         std::vector<const Lift*> near_boundary;
-        if (const Solver_result<IT>* kept = kept_solve(b, L, known)) {
+        if (const Solver_result<IT>* kept = kept_solve(b, L, known, this->kept)) {
           const bool missed = lifts_missed;
           std::string w;
-          settled = check_group(b, L, known, *kept, same, members, w, near_boundary);
+          settled = check_group(b, L, known, *kept, same, members, w, near_boundary, true);
           lifts_missed = missed;
           if (settled) ++kept_solves;
         }
         if (!settled) {
           near_boundary.clear();
           Solver_result<IT> res = solve_block(b, L, known);
-          if (res.unresolved.empty() && std::all_of(res.roots.begin(), res.roots.end(), [](const Solver_root<IT>& r) { return r.certified; }))
+          if (res.unresolved.empty() && std::all_of(res.roots.begin(), res.roots.end(), [](const Solver_root<IT>& r) { return r.certified; }) &&
+              !kept_solve(b, L, known, recent, true))  // (not twice when the piece is lifted a second time)
             recent.push_back(Kept_solve{b, L, res});
           if (!check_group(b, L, known, res, same, members, why, near_boundary)) return false;
         }
@@ -646,14 +662,20 @@ template <class IT, class NT> struct Plan_trace_run
   };
   std::vector<Kept_solve> kept, recent;
   std::size_t kept_solves = 0;
-  const Solver_result<IT>* kept_solve(std::size_t b, const Lift& L, const std::vector<char>& known) const
+  // the newest solve in `from` of block b over inputs that contain L's (over the known
+  // variables), or with `equal`, over exactly L's inputs
+  const Solver_result<IT>* kept_solve(std::size_t b, const Lift& L, const std::vector<char>& known, const std::vector<Kept_solve>& from,
+                                      bool equal = false) const
   {
-    for (auto it = kept.rbegin(); it != kept.rend(); ++it) {  // the newest first: the narrowest
+    for (auto it = from.rbegin(); it != from.rend(); ++it) {  // the newest first: the narrowest
       const Kept_solve& k = *it;
       if (k.b != b) continue;
       bool in = true;
-      for (std::size_t j = 0; j < n && in; ++j)
-        in = !known[j] || (!(O::lower(L.value[j]) < O::lower(k.L.value[j])) && !(O::upper(k.L.value[j]) < O::upper(L.value[j])));
+      for (std::size_t j = 0; j < n && in; ++j) {
+        if (!known[j]) continue;
+        const auto l = O::lower(L.value[j]), u = O::upper(L.value[j]), kl = O::lower(k.L.value[j]), ku = O::upper(k.L.value[j]);
+        in = equal ? l == kl && u == ku : !(l < kl) && !(ku < u);
+      }
       if (in) return &k.res;
     }
     return nullptr;
@@ -662,17 +684,22 @@ template <class IT, class NT> struct Plan_trace_run
   // lift_piece(): block b solved (`res`) over the inputs L of the group `members` of lifts
   // (`same`: one per root of block b among them) accounts for their roots and no others
   // (`near_boundary` gets the members whose root box over the piece meets an inequality's zero)
+  // (`deferred`: the partial lifts that must die after b, which are further block solves, are
+  // checked after the matching, so that a kept solve the matching rejects does not cost them)
   bool check_group(std::size_t b, const Lift& L, const std::vector<char>& known, const Solver_result<IT>& res,
                    const std::vector<const Lift*>& same, const std::vector<const Lift*>& members, std::string& why,
-                   std::vector<const Lift*>& near_boundary)
+                   std::vector<const Lift*>& near_boundary, bool deferred = false)
   {
     const Plan_block& blk = blocks[b];
+    std::vector<char> after = known;
+    for (std::size_t j : blk.variables) after[j] = 1;
+    std::vector<Lift> orphans;  // with `deferred`: the unresolved boxes', then the roots of no lift's
+    const std::size_t unresolved = deferred ? res.unresolved.size() : 0;
     for (const auto& u : res.unresolved) {  // no lift's root: fine if nothing in it continues
       Lift M = L;
       for (std::size_t k = 0; k < blk.variables.size(); ++k) M.value[blk.variables[k]] = u.box[k];
-      std::vector<char> after = known;
-      for (std::size_t j : blk.variables) after[j] = 1;
-      if (!dies(b + 1, M, after)) { why = block_name(b) + " over the piece: " + u.reason; return false; }
+      if (deferred) orphans.push_back(std::move(M));
+      else if (!dies(b + 1, M, after)) { why = block_name(b) + " over the piece: " + u.reason; return false; }
     }
     std::vector<char> hit(same.size(), 0);
     std::vector<std::size_t> root_of(same.size(), res.roots.size());  // the root each one holds
@@ -687,9 +714,8 @@ template <class IT, class NT> struct Plan_trace_run
       // a root of no lift: its partial lift must die in the blocks after b
       Lift M = L;
       for (std::size_t k = 0; k < blk.variables.size(); ++k) M.value[blk.variables[k]] = root.enclosure[k];
-      std::vector<char> after = known;
-      for (std::size_t j : blk.variables) after[j] = 1;
-      if (!dies(b + 1, M, after)) return fail_on_lifts(why, block_name(b) + " over the piece: a root the lifts do not account for");
+      if (deferred) orphans.push_back(std::move(M));
+      else if (!dies(b + 1, M, after)) return fail_on_lifts(why, block_name(b) + " over the piece: a root the lifts do not account for");
     }
     if (std::find(hit.begin(), hit.end(), char(0)) != hit.end()) return fail_on_lifts(why, block_name(b) + " over the piece: a lift's root not found");
     // each lift of the group (not only the one per root above) meets with its box exactly
@@ -707,6 +733,11 @@ template <class IT, class NT> struct Plan_trace_run
         if (same[t]->path[b - 1] == S->path[b - 1]) r = t;
       if (r == same.size() || root_of[r] != which) return fail_on_lifts(why, block_name(b) + " over the piece: lifts with one path meet several roots");
       if (res.roots[which].on_inequality_boundary) near_boundary.push_back(S);
+    }
+    for (std::size_t k = 0; k < orphans.size(); ++k) {
+      if (dies(b + 1, orphans[k], after)) continue;
+      if (k < unresolved) { why = block_name(b) + " over the piece: " + res.unresolved[k].reason; return false; }
+      return fail_on_lifts(why, block_name(b) + " over the piece: a root the lifts do not account for");
     }
     return true;
   }
@@ -1547,7 +1578,9 @@ Curve_result<IT> trace_curves_with_plan(const Polynomial_system<NT>& system, con
         else pts.push_back(whole.points.back());
         pts.push_back(run.point(second, L, &pts.back()));
         whole.boxes.push_back(L.value);
-        whole.on_inequality_boundary = whole.on_inequality_boundary || L.inequality_boundary || c.on_inequality_boundary;
+        // (block 0's flag only where this piece's own stretch of block 0 may meet the zero)
+        whole.on_inequality_boundary = whole.on_inequality_boundary || L.inequality_boundary ||
+                                       (c.on_inequality_boundary && (p.X0.empty() || run.block0_inequality_boundary(p.X0)));
       }
       // the first point is the junction with the element before
       whole.points.insert(whole.points.end(), pts.begin() + (whole.points.empty() ? 0 : 1), pts.end());
