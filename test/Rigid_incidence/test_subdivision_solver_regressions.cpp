@@ -26,6 +26,8 @@
 //  - random system #2488 of seed 99 (4 variables, two cubics): tightening must fall back on the
 //    Bernstein arrays' Jacobian where the evaluations' one does not contract (every planted root
 //    in exactly one certified enclosure at most 1e-11 wide; it stayed 0.08 wide).
+//  - random system #5539 of seed 99: a simple root with a condition number of 1e9 leaves a
+//    compact cluster of 2171 boxes in double, which must be retried at 106 bits (certified).
 
 #include "test_check.h"
 
@@ -293,7 +295,7 @@ box x1 -2 1.125
 box x2 -4.875 -1
 box x3 -0.25 3.25
 )";
-static const char* random_2488_roots[6][4] = {
+static const std::vector<std::vector<std::string>> random_2488_roots = {
   {"-9970729/1696695", "-268748059/156095940", "-8845147/7804797", "3620489/13007995"},
   {"-7664408/2375373", "-235938613/237537300", "-294093991/118768650", "960324/791791"},
   {"-55229848/28843815", "-9958453/16482180", "-89184541/57687630", "30253486/28843815"},
@@ -301,35 +303,62 @@ static const char* random_2488_roots[6][4] = {
   {"201195622/96711615", "8670169373/17794937160", "-17569636199/4448734290", "2108371457/808860780"},
   {"187501616866/86041100145", "87154752283/172082200290", "-40242327319/9056957910", "161516521129/57360733430"}};
 
-static void tightening_fallback()
+// Random system #5539 of `test_subdivision_solver_random 6000 99` (4 variables, cubics through
+// shared points) and its 4 planted roots in the box. The one at (592, -14.7, -354, -274) has a
+// condition number of about 1e9: in double it leaves 2171 boxes of the singular width, 12 of
+// them across, stopped as "possible multiple root"; too many for the retry at 106 bits, which
+// took clusters of at most 256 boxes, and certifies it at once (a compact cluster is retried).
+static const char* random_5539 = R"(4
+(2/1)*x0^3 + (-18/1)*x0^2*x1 + (19/1)*x0^2*x2 + (50/3)*x0^2*x3 + (-114734/4095)*x0^2 + (12/1)*x0*x1^2 + (-37/1)*x0*x1*x2 + (-62/3)*x0*x1*x3 + (-13424/585)*x0*x1 + (24/1)*x0*x2^2 + (88/3)*x0*x2*x3 + (10844/1365)*x0*x2 + (16/3)*x0*x3^2 + (183739/4095)*x0*x3 + (-9318821/81900)*x0 + (32/1)*x1^3 + (-56/1)*x1^2*x2 + (-112/3)*x1^2*x3 + (140692/1365)*x1^2 + (24/1)*x1*x2^2 + (88/3)*x1*x2*x3 + (-190721/1365)*x1*x2 + (16/3)*x1*x3^2 + (-286276/4095)*x1*x3 + (681479/13650)*x1 + (54/1)*x2^2 + (152/3)*x2*x3 + (-209047/2730)*x2 + (38/3)*x3^2 + (20153/585)*x3 + (-1650333/18200);
+(-5/1)*x0^3 + (45/1)*x0^2*x1 + (-95/2)*x0^2*x2 + (-125/3)*x0^2*x3 + (50821/728)*x0^2 + (-30/1)*x0*x1^2 + (185/2)*x0*x1*x2 + (155/3)*x0*x1*x3 + (19151/312)*x0*x1 + (-60/1)*x0*x2^2 + (-220/3)*x0*x2*x3 + (-44923/2184)*x0*x2 + (-40/3)*x0*x3^2 + (-724127/6552)*x0*x3 + (7323527/26208)*x0 + (-80/1)*x1^3 + (140/1)*x1^2*x2 + (280/3)*x1^2*x3 + (-74987/273)*x1^2 + (-60/1)*x1*x2^2 + (-220/3)*x1*x2*x3 + (386083/1092)*x1*x2 + (-40/3)*x1*x3^2 + (530783/3276)*x1*x3 + (-148703/1260)*x1 + (-489/4)*x2^2 + (-431/3)*x2*x3 + (1107423/7280)*x2 + (-329/12)*x3^2 + (-294601/5040)*x3 + (39016673/163800);
+(3/4)*x0^3 + (-27/4)*x0^2*x1 + (57/8)*x0^2*x2 + (25/4)*x0^2*x3 + (-39913/3640)*x0^2 + (9/2)*x0*x1^2 + (-111/8)*x0*x1*x2 + (-31/4)*x0*x1*x3 + (-423/520)*x0*x1 + (9/1)*x0*x2^2 + (11/1)*x0*x2*x3 + (5839/3640)*x0*x2 + (2/1)*x0*x3^2 + (109387/5460)*x0*x3 + (-318008/6825)*x0 + (12/1)*x1^3 + (-21/1)*x1^2*x2 + (-14/1)*x1^2*x3 + (5143/910)*x1^2 + (9/1)*x1*x2^2 + (11/1)*x1*x2*x3 + (-160691/3640)*x1*x2 + (2/1)*x1*x3^2 + (-278273/5460)*x1*x3 + (2244421/54600)*x1 + (45/1)*x2^2 + (-14/1)*x2*x3 + (-16903/182)*x2 + (13/1)*x3^2 + (344087/5460)*x3 + (-4379/1365);
+(-5/1)*x0^3 + (45/1)*x0^2*x1 + (-95/2)*x0^2*x2 + (-125/3)*x0^2*x3 + (19183/273)*x0^2 + (-30/1)*x0*x1^2 + (185/2)*x0*x1*x2 + (155/3)*x0*x1*x3 + (2090/39)*x0*x1 + (-60/1)*x0*x2^2 + (-220/3)*x0*x2*x3 + (-5240/273)*x0*x2 + (-40/3)*x0*x3^2 + (-186287/1638)*x0*x3 + (9338989/32760)*x0 + (-80/1)*x1^3 + (140/1)*x1^2*x2 + (280/3)*x1^2*x3 + (-65978/273)*x1^2 + (-60/1)*x1*x2^2 + (-220/3)*x1*x2*x3 + (188537/546)*x1*x2 + (-40/3)*x1*x3^2 + (152966/819)*x1*x3 + (-1121633/8190)*x1 + (-147/1)*x2^2 + (-332/3)*x2*x3 + (172141/780)*x2 + (-107/3)*x3^2 + (-1813939/16380)*x3 + (17288183/81900);
+
+box x0 -3.5 592.375
+box x1 -15 1.625
+box x2 -354.75 1
+box x3 -274.75 2.625
+)";
+static const std::vector<std::vector<std::string>> random_5539_roots = {
+  {"-158191/51142", "55907/51142", "241907/383565", "232027/102284"},
+  {"-2783/2743", "-2703/2743", "34721/41145", "34319/32916"},
+  {"-5/13", "-1/1", "7/15", "3/4"},
+  {"700195/1183", "-69607/4732", "-6284594/17745", "-46367/169"}};
+
+// every planted root in exactly one certified enclosure at most 1e-11 wide, and nothing else
+static void check_planted_roots(const char* text, const std::vector<std::vector<std::string>>& roots, const std::string& name)
 {
-  std::istringstream in(random_2488);
+  std::istringstream in(text);
   RI::Polynomial_system_file f = RI::read_polynomial_system(in);
   RI::Solver_result<I> r = RI::Subdivision_solver<I>().solve(f.system);
-  CHECK(r.complete() && r.roots.size() == 6, "random #2488 of seed 99: " << r.roots.size() << " roots, complete " << r.complete());
-  std::vector<int> hits(6, 0);
+  CHECK(r.complete() && r.roots.size() == roots.size(), name << ": " << r.roots.size() << " roots, complete " << r.complete());
+  for (const auto& u : r.unresolved) CHECK(false, name << ": unresolved, " << u.reason);
+  std::vector<int> hits(roots.size(), 0);
   for (const auto& x : r.roots) {
     int inside = 0;
-    for (std::size_t k = 0; k < 6; ++k) {
+    for (std::size_t k = 0; k < roots.size(); ++k) {
       bool in_box = true;
-      for (std::size_t j = 0; j < 4; ++j) {
-        const Q v(random_2488_roots[k][j]);
+      for (std::size_t j = 0; j < roots[k].size(); ++j) {
+        const Q v(roots[k][j]);
         in_box = in_box && Q(x.enclosure[j].inf()) <= v && v <= Q(x.enclosure[j].sup());
       }
       if (in_box) { ++inside; ++hits[k]; }
     }
     double w = 0;
     for (const auto& e : x.enclosure) w = (std::max)(w, e.sup() - e.inf());
-    CHECK(x.certified && inside == 1, "random #2488 of seed 99: a certified enclosure holds " << inside << " planted roots");
-    CHECK(w <= 1e-11, "random #2488 of seed 99: a certified enclosure " << w << " wide (tolerance 1e-12)");
+    CHECK(x.certified && inside == 1, name << ": a certified enclosure holds " << inside << " planted roots");
+    CHECK(w <= 1e-11, name << ": a certified enclosure " << w << " wide (tolerance 1e-12)");
   }
-  for (std::size_t k = 0; k < 6; ++k) CHECK(hits[k] == 1, "random #2488 of seed 99: planted root " << k << " in " << hits[k] << " enclosures");
+  for (std::size_t k = 0; k < roots.size(); ++k) CHECK(hits[k] == 1, name << ": planted root " << k << " in " << hits[k] << " enclosures");
 }
 
 int main()
 {
   storage_limit();
-  tightening_fallback();
+  check_planted_roots(random_2488, random_2488_roots, "random #2488 of seed 99");
+#ifdef CGAL_USE_MPFI
+  check_planted_roots(random_5539, random_5539_roots, "random #5539 of seed 99");
+#endif
   many_variables();
   ill_conditioned_tube<I>("Interval_nt");
 #ifdef CGAL_USE_MPFI

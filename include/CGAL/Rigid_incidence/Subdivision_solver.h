@@ -1331,8 +1331,14 @@ private:
     {
       std::vector<Solver_unresolved<IT>> unknown = cluster(unknown_nodes, Box_class::UNKNOWN);
       for (auto& u : unknown) {
-        // a small cluster may be a root the precision could not certify: solve it again
-        if (retry && u.boxes <= 256 && unknown.size() <= 16 && pending_nodes.empty() && (!same_precision_retry || u.rank_deficient)) {
+        // a small cluster may be a root the precision could not certify: solve it again. Small:
+        // at most 256 boxes, or compact, at most 64 singular widths across in every variable
+        // (a simple root with a condition number of 1e9, at coordinates near 500, leaves
+        // thousands of boxes of the singular width in a blob 12 to 16 of them across, and is
+        // certified at once at 106 bits; a curve of solutions leaves long clusters instead)
+        bool compact = true;
+        for (std::size_t j = 0; j < n && compact; ++j) compact = O::upper_double(u.box[j]) - O::lower_double(u.box[j]) <= 64 * singular_width;
+        if (retry && (u.boxes <= 256 || compact) && unknown.size() <= 16 && pending_nodes.empty() && (!same_precision_retry || u.rank_deficient)) {
           ++result.statistics.precision_retries;
           std::vector<Bound> lo = lower_of(u.box), hi = upper_of(u.box);
           for (std::size_t j = 0; j < n; ++j) {
