@@ -758,22 +758,25 @@ private:
           // leaves unresolved at the minimal width). An edge of the search box itself stays, and
           // a curve may leave through it (z = x leaves the cube [-2, 2]^3 through its edges
           // x = z = +-2): such a crossing is an end of the curve, found on each of the faces
-          // that meet there, and counted once.
-          bool at_edge = false;
+          // that meet there, and counted once. It is one only if the curve enters the box
+          // there: its tangent points strictly inwards through every one of those faces (a
+          // curve that touches the box at a corner only, x^2 + z^2 = 8 at the corners of
+          // [-2, 2]^2, does not; taken as two crossings it made an arc between two corners)
+          std::vector<std::pair<std::size_t, int>> faces;  // (variable, side) the crossing lies on
           if (root.on_boundary) {
             bool outer = search_face(B, i, side);
+            faces.emplace_back(i, side);
             for (std::size_t v = 0, w = 0; v < n && outer; ++v) {
               if (v == i) continue;
               const IT& e = root.enclosure[w];
-              if (!(f.box[w].first < O::lower_double(e)) && !search_face(B, v, 0)) outer = false;
-              if (!(O::upper_double(e) < f.box[w].second) && !search_face(B, v, 1)) outer = false;
+              if (!(f.box[w].first < O::lower_double(e))) { outer = outer && search_face(B, v, 0); faces.emplace_back(v, 0); }
+              if (!(O::upper_double(e) < f.box[w].second)) { outer = outer && search_face(B, v, 1); faces.emplace_back(v, 1); }
               ++w;
             }
             if (!outer) { why = "crossing at a box edge"; return false; }
-            at_edge = true;
           }
           Crossing x;
-          x.at_edge = at_edge;
+          x.at_edge = !faces.empty();
           x.face_variable = i;
           x.upper = side == 1;
           for (std::size_t v = 0, w = 0; v < n; ++v) {
@@ -800,10 +803,31 @@ private:
             // moving in +x_j, x_i grows if ui > 0: into the box through its lower face
             x.entry = certainly_positive(ui) != x.upper;
           }
-          bool seen = false;  // on another face of the edge already
-          if (at_edge)
-            for (const Crossing& y : found) seen = seen || (y.at_edge && meet(y.enclosure, x.enclosure));
-          if (!seen) found.push_back(x);
+          if (x.at_edge) {
+            // moving along s * (dx/dx_j) (s = +-1) the curve enters through every face it lies on
+            const std::vector<IT> u = j < n ? tangent(x.enclosure, j) : std::vector<IT>();
+            int s = 0;
+            bool enters = !u.empty();
+            for (const auto& fv : faces) {
+              if (!enters) break;
+              const IT t = fv.first == j ? IT(1) : u[fv.first < j ? fv.first : fv.first - 1];
+              if (!certainly_positive(t) && !certainly_negative(t)) { enters = false; break; }
+              const int in = (certainly_positive(t) ? 1 : -1) * (fv.second ? -1 : 1);  // the s that goes in here
+              if (s != 0 && in != s) enters = false;
+              s = in;
+            }
+            if (!enters) { why = "crossing at a box edge"; return false; }
+            x.sign_known = true;
+            x.entry = s > 0;
+            bool seen = false;  // on another face of the edge already: the same point, the same way in
+            for (const Crossing& y : found) {
+              if (!y.at_edge || !meet(y.enclosure, x.enclosure)) continue;
+              if (y.face_variable == x.face_variable || y.entry != x.entry) { why = "crossing at a box edge"; return false; }
+              seen = true;
+            }
+            if (seen) continue;
+          }
+          found.push_back(x);
         }
       }
     return true;

@@ -1336,7 +1336,8 @@ private:
         // (a simple root with a condition number of 1e9, at coordinates near 500, leaves
         // thousands of boxes of the singular width in a blob 12 to 16 of them across, and is
         // certified at once at 106 bits; a curve of solutions leaves long clusters instead)
-        bool compact = true;
+        // (and at most 4096 boxes: a tangency of small curvature radius can be compact too)
+        bool compact = u.boxes <= 4096;
         for (std::size_t j = 0; j < n && compact; ++j) compact = O::upper_double(u.box[j]) - O::lower_double(u.box[j]) <= 64 * singular_width;
         if (retry && (u.boxes <= 256 || compact) && unknown.size() <= 16 && pending_nodes.empty() && (!same_precision_retry || u.rank_deficient)) {
           ++result.statistics.precision_retries;
@@ -1355,7 +1356,14 @@ private:
             const auto& u = r.uniqueness_box.empty() ? r.enclosure : r.uniqueness_box;
             record(rl, rh, lower_of(u), upper_of(u), r.certified);
           }
-          for (auto& v : sub.unresolved) result.unresolved.push_back(v);
+          // a retry that ran out of boxes says less than the cluster it was given: that is kept
+          const bool ran_out = std::any_of(sub.unresolved.begin(), sub.unresolved.end(),
+                                           [](const Solver_unresolved<IT>& v) { return v.kind == Box_class::PENDING; });
+          if (ran_out) {
+            u.reason += " (solved again at a higher precision: box budget exhausted)";
+            result.unresolved.push_back(u);
+          } else
+            for (auto& v : sub.unresolved) result.unresolved.push_back(v);
           continue;
         }
         result.unresolved.push_back(u);
