@@ -805,7 +805,7 @@ private:
           }
           if (x.at_edge) {
             // moving along s * (dx/dx_j) (s = +-1) the curve enters through every face it lies on
-            const std::vector<IT> u = j < n ? tangent(x.enclosure, j) : std::vector<IT>();
+            const std::vector<IT> u = tangent(x.enclosure, j);  // (B.parameter: j < n)
             int s = 0;
             bool enters = !u.empty();
             for (const auto& fv : faces) {
