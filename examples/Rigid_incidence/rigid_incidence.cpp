@@ -190,6 +190,8 @@ int analyze(const Options& o)
   RI::Rigid_body_collection<Traits> c;
   try {
     c = RI::standardize(input, &log);
+  } catch (const RI::No_real_configuration& e) {
+    throw RI::No_real_configuration(o.scene + ": " + e.what());
   } catch (const RI::Input_error& e) {
     throw RI::Input_error(o.scene + ": " + e.what());
   }
@@ -303,8 +305,12 @@ int analyze(const Options& o)
       placement_notes[i] = e.what();
       continue;
     }
-    if (placements[i] == 0)
-      throw RI::Input_error(o.scene + ": body '" + c.body(i).name + "': its distances admit no real placement");
+    if (placements[i] == 0) {
+      auto e = RI::enumerate_placements<CGAL::Interval_nt<false>>(c, i);
+      throw RI::No_real_configuration(o.scene + ": " + (e.inconsistent.empty() ? "body '" + c.body(i).name +
+                                                                                       "': its distances admit no real placement"
+                                                                                 : e.inconsistent));
+    }
   }
   auto labels = [&](const std::vector<std::size_t>& pts) {
     std::vector<std::string> l;
@@ -598,6 +604,24 @@ int main(int argc, char** argv)
     if (o.kernel == "epeck") return analyze<RI::Rigid_incidence_traits<CGAL::Exact_predicates_exact_constructions_kernel>>(o);
     std::cerr << "rigid_incidence: unknown kernel '" << o.kernel << "' (exact, epick or epeck)\n";
     return 1;
+  } catch (const RI::No_real_configuration& e) {
+    // a well-formed scene without a real configuration: a complete answer, not an error
+    if (o.json) {
+      nlohmann::ordered_json j;
+      j["scene"] = o.scene;
+      j["complete"] = true;
+      j["certified"] = true;
+      j["diagnosis"] = nullptr;
+      j["no_configuration"] = e.what();
+      j["solutions"] = nlohmann::ordered_json::array();
+      j["unresolved"] = nlohmann::ordered_json::array();
+      j["curves"] = nlohmann::ordered_json::array();
+      std::cout << j.dump(2) << "\n";
+    } else {
+      std::cout << "scene " << o.scene << ": no real configuration: " << e.what() << "\n";
+      if (o.command == "solve") std::cout << "0 configuration(s), all certified: complete\n";
+    }
+    return 0;
   } catch (const RI::Input_error& e) {
     std::cerr << "rigid_incidence: error: " << e.what() << "\n";
     return 2;

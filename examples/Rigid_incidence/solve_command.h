@@ -371,10 +371,21 @@ int solve(const RI::Scene& scene, const RI::Rigid_body_collection<Traits>& input
     j["complete"] = r.complete();
     j["certified"] = !r.fast;
     j["diagnosis"] = r.diagnosis.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(r.diagnosis);
+    j["no_configuration"] = r.no_configuration.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(r.no_configuration);
+    j["limits"] = r.limits;
+    nlohmann::ordered_json pl = nlohmann::ordered_json::array();
+    for (const auto& x : r.placements)
+      pl.push_back({{"body", x.body}, {"placements", x.placements}, {"complete", x.complete}, {"precision_bits", x.precision},
+                    {"relative_width", x.relative_width},
+                    {"singular", x.singular.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(x.singular)},
+                    {"inconsistent", x.inconsistent.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(x.inconsistent)}});
+    j["placements"] = pl;
     nlohmann::ordered_json sols = nlohmann::ordered_json::array();
     for (const auto& x : r.configurations) {
       nlohmann::ordered_json sj;
       sj["certified"] = x.certified;
+      sj["singular"] = x.singular;
+      if (x.singular) sj["singular_reason"] = x.singular_reason;
       if (!scene.inequalities.empty()) sj["on_inequality_boundary"] = x.on_inequality_boundary;
       nlohmann::ordered_json params = nlohmann::ordered_json::object();
       for (std::size_t i = 0; i < x.variables.size(); ++i) params[x.variables[i]] = {x.parameters[i].first, x.parameters[i].second};
@@ -447,6 +458,12 @@ int solve(const RI::Scene& scene, const RI::Rigid_body_collection<Traits>& input
   std::cout << "scene " << scene_file << ": reduced system of " << r.variables.size() << " variables, " << r.equations << " equations; "
             << st.chart_combinations << " chart combination(s) solved" << (r.fast ? " in the FAST, NON-CERTIFIED mode" : "") << "\n";
   if (!r.diagnosis.empty()) std::cout << "diagnosis: " << r.diagnosis << "\n";
+  if (!r.no_configuration.empty()) std::cout << "no real configuration: " << r.no_configuration << "\n";
+  for (const auto& x : r.placements)
+    std::cout << "placements of body '" << x.body << "': " << x.placements << (x.complete ? "" : " (NOT all)") << ", enclosed at "
+              << x.precision << " bits (relative width " << std::setprecision(2) << x.relative_width << std::setprecision(10) << ")"
+              << (x.singular.empty() ? "" : "; singular: " + x.singular) << "\n";
+  for (const auto& l : r.limits) std::cout << "limit reached: " << l << "\n";
   for (const auto& q : scene.inequalities)
     std::cout << "inequality: det(" << q.points[1] << " - " << q.points[0] << ", " << q.points[2] << " - " << q.points[0] << ", "
               << q.points[3] << " - " << q.points[0] << ") " << (q.negative ? "<= 0" : ">= 0") << "\n";
@@ -456,7 +473,8 @@ int solve(const RI::Scene& scene, const RI::Rigid_body_collection<Traits>& input
   std::size_t k = 0;
   for (const auto& x : r.configurations) {
     std::cout << "\nconfiguration " << ++k << ": " << (x.certified ? "certified" : "NOT certified")
-              << (x.on_inequality_boundary ? " (on an inequality's boundary)" : "") << ", max residual "
+              << (x.on_inequality_boundary ? " (on an inequality's boundary)" : "")
+              << (x.singular ? ", SINGULAR (a double configuration: " + x.singular_reason + ")" : "") << ", max residual "
               << std::setprecision(3) << x.max_residual << std::setprecision(10) << " in the original system\n  parameters:";
     for (std::size_t i = 0; i < x.variables.size(); ++i)
       std::cout << " " << x.variables[i] << " in [" << x.parameters[i].first << ", " << x.parameters[i].second << "]";

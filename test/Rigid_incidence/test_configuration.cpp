@@ -142,7 +142,13 @@ int main()
     RI::Rigid_fit g = RI::fit_rigid_motion(y, xm);
     CHECK(g.ok && g.reflected && g.rms > 0.1, "a mirror image is not flagged");
     RI::Rigid_fit h = RI::fit_rigid_motion({{0, 0, 0}, {1, 0, 0}, {2, 0, 0}}, {{0, 0, 0}, {0, 1, 0}, {0, 2, 0}});
-    CHECK(!h.ok, "collinear points fitted");
+    // collinear points: the rotation about their line is free; one that fits is returned,
+    // flagged (a triangle 1e-7 off its hinge is a body of a scene, and its residual counts)
+    CHECK(h.ok && h.collinear && h.rms < 1e-12, "collinear points: ok " << h.ok << ", collinear " << h.collinear << ", rms " << h.rms);
+    RI::Rigid_fit h1 = RI::fit_rigid_motion({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
+    CHECK(h1.ok && !h1.collinear, "a proper triangle flagged collinear");
+    RI::Rigid_fit h2 = RI::fit_rigid_motion({{1, 1, 1}, {1, 1, 1}, {1, 1, 1}}, {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}});
+    CHECK(!h2.ok, "three points at one place fitted");
     RI::Rigid_motion id = m.inverse() * m;
     for (int i = 0; i < 9; ++i) CHECK(std::abs(id.R[std::size_t(i)] - (i % 4 == 0 ? 1 : 0)) < 1e-12, "inverse");
   }

@@ -71,7 +71,10 @@ struct Rigid_fit
   Rigid_motion motion;     ///< the rotation and translation
   bool reflected = false;  ///< the points fit a mirror image better: a body would come back mirrored
   double rms = 0;          ///< root mean square distance of the fitted points
-  bool ok = false;         ///< false with fewer than 3 points, or (nearly) collinear ones
+  bool ok = false;         ///< false with fewer than 3 points, or all of them at one place
+  /// the points are (nearly) collinear: the rotation about their line is not determined by
+  /// them, and `motion` is one that fits (its `rms` says how well)
+  bool collinear = false;
 };
 
 /*!
@@ -98,10 +101,13 @@ inline Rigid_fit fit_rigid_motion(const std::vector<std::array<double, 3>>& y, c
   }
   Eigen::JacobiSVD<Eigen::Matrix3d> svd(H, Eigen::ComputeFullU | Eigen::ComputeFullV);
   Eigen::Vector3d sv = svd.singularValues();
+  if (!(scale > 0)) return f;
   // collinear: the rotation about the line is free. The singular values are products of two
   // lengths (a triangle of height h and side 1 has sv(1) ~ h^2), and their round-off is a
-  // few units in the last place of sv(0): only below that is the body collinear
-  if (!(scale > 0) || sv(1) <= 64 * std::numeric_limits<double>::epsilon() * sv(0)) return f;
+  // few units in the last place of sv(0): below that the body is collinear as far as doubles
+  // tell, and any rotation that aligns the line fits it as well as its height allows (a
+  // triangle 1e-7 off its hinge is a body of the scene, not an error)
+  f.collinear = sv(1) <= 64 * std::numeric_limits<double>::epsilon() * sv(0);
   Eigen::Matrix3d D = Eigen::Matrix3d::Identity();
   const double det = (svd.matrixV() * svd.matrixU().transpose()).determinant();
   if (det < 0) D(2, 2) = -1;
@@ -330,7 +336,7 @@ Residual_report residuals(const Rigid_body_collection<Traits>& original, const C
       continue;
     }
     fit[b] = fit_rigid_motion(local[b], x);
-    if (!fit[b].ok) { add(Residual::UNPLACED, name + " (collinear points)", std::numeric_limits<double>::infinity()); continue; }
+    if (!fit[b].ok) { add(Residual::UNPLACED, name + " (fewer than 3 points, or all at one place)", std::numeric_limits<double>::infinity()); continue; }
     if (fit[b].reflected) add(Residual::MIRRORED, name + " fits only mirrored", 1);
     double worst = 0;
     for (std::size_t i = 0; i < x.size(); ++i) worst = (std::max)(worst, std::sqrt(dist2(fit[b].motion(local[b][i]), x[i])));

@@ -11,13 +11,19 @@
 #include <CGAL/Rigid_incidence/Input_error.h>
 #include <CGAL/Rigid_incidence/Rigid_body_collection.h>
 #include <CGAL/Rigid_incidence/internal/cayley_menger.h>
+#include <CGAL/Rigid_incidence/internal/interval_ops.h>
 #include <CGAL/Rigid_incidence/internal/parse_number.h>
 
 #include <CGAL/Gmpq.h>
 #include <CGAL/Interval_nt.h>
 #include <CGAL/Interval_traits.h>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
+#include <deque>
+#include <limits>
+#include <memory>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -38,6 +44,9 @@ struct Body_enclosure
   bool consistent = true;
   int variant = 0;        ///< which placement this is (see `enclose_all_placements()`)
   bool in_given_frame = true; ///< in the frame of the body's coordinates (else a canonical frame)
+  /// a double placement: a point lies exactly on the plane of the three points it is placed
+  /// from, so its two sides coincide (see `Placement_enumeration::singular`)
+  bool singular = false;
 };
 
 namespace internal {
@@ -104,79 +113,123 @@ template <class IT> IT nonnegative(const IT& x)
 
 namespace internal {
 
-template <class IT, class Traits>
-class Placer
+// One trilateration of a body's placement, in exact rationals: point p is
+//   X_p = X_A + a (X_B - X_A) + b (X_C - X_A) + side sqrt(s) (X_B - X_A) x (X_C - X_A),
+// where a, b and s come from the six squared distances among p, A, B, C alone (s = h^2 / G,
+// h the height of p over the plane ABC, G = |(B - A) x (C - A)|^2 the Gram determinant).
+// So the side choices and the rounding of earlier points never enter them, and whether p
+// has two sides, one (h = 0: a double placement) or none is decided exactly.
+struct Placement_step
 {
-  typedef std::array<IT, 3> P;
-  typedef typename Traits::FT FT;
+  std::size_t p = 0, A = 0, B = 0, C = 0;
+  CGAL::Gmpq a, b, s;
+  CGAL::Sign sign = CGAL::POSITIVE;  // of s
+};
+
+// What a body's distances say about its placements, exactly, before a side is chosen.
+struct Placement_plan
+{
+  std::size_t m = 0;
+  std::vector<std::string> labels;
+  std::vector<std::vector<std::optional<CGAL::Gmpq>>> known;   // squared distances, local indices
+  std::vector<std::optional<std::array<CGAL::Gmpq, 3>>> given; // coordinates the body gives
+  bool in_given_frame = false;
+  std::array<std::size_t, 3> base{{0, 0, 0}};  // canonical frame: base[0] at 0, base[1] on +x, base[2] in xy, y > 0
+  CGAL::Gmpq d01, c1, y2;                      // |base0 base1|^2; base2 = (c1 sqrt(d01), sqrt(y2), 0)
+  std::vector<Placement_step> steps;           // in placement order
+  std::vector<std::array<std::size_t, 4>> orient_idx;
+  std::vector<CGAL::Sign> orient_sign;
+  std::string inconsistent;  // nonempty: the distances admit no placement, and why
+  std::string singular;      // nonempty: every placement is a double one, and where
+  double scale = 1;          // the body's size: its largest distance or coordinate
+};
+
+template <class Traits>
+class Placement_planner
+{
   typedef Rigid_body_collection<Traits> Collection;
   typedef typename Collection::Body Body;
+  typedef CGAL::Gmpq Q;
 
 public:
-  Placer(const Collection& c, const Body& b, std::size_t max_placements)
-    : c_(c), b_(b), m_(b.points.size()), max_(max_placements) {}
+  Placement_planner(const Collection& c, const Body& b) : c_(c), b_(b) {}
 
-  // All placements: start from the points with coordinates if they alone let every point be
-  // placed, else (or if there are none) from a triangle of distances in a canonical frame, in
-  // which case the coordinates given for some points enter as distances and orientations.
-  std::vector<Body_enclosure<IT>> run()
+  Placement_plan run()
   {
-    Rounding_guard<IT> protect;
-    // table of known squared distances (local indices); coordinates give them too
-    known_.assign(m_, std::vector<std::optional<FT>>(m_));
-    for (std::size_t i = 0; i < m_; ++i)
-      for (std::size_t j = i + 1; j < m_; ++j) known_[i][j] = known_[j][i] = b_.squared(i, j);
-    std::vector<P> coords(m_, P{IT(0), IT(0), IT(0)});
-    std::vector<bool> placed(m_, false);
+    Placement_plan& P = plan_;
+    const std::size_t m = b_.points.size();
+    P.m = m;
+    for (std::size_t i = 0; i < m; ++i) P.labels.push_back(c_.label(b_.points[i]));
+    P.known.assign(m, std::vector<std::optional<Q>>(m));
+    P.given.assign(m, std::nullopt);
+    double scale2 = 0, scale1 = 0;
+    for (std::size_t i = 0; i < m; ++i)
+      for (std::size_t j = i + 1; j < m; ++j)
+        if (auto d = b_.squared(i, j)) {
+          P.known[i][j] = P.known[j][i] = exact_rational(*d);
+          scale2 = (std::max)(scale2, CGAL::to_double(*P.known[i][j]));
+        }
+    std::vector<bool> placed(m, false);
     std::size_t given = 0;
-    for (std::size_t i = 0; i < m_; ++i)
+    for (std::size_t i = 0; i < m; ++i)
       if (b_.has_coordinates[i]) {
-        coords[i] = P{enclose<IT>(Traits::x(b_.coordinates[i])), enclose<IT>(Traits::y(b_.coordinates[i])),
-                      enclose<IT>(Traits::z(b_.coordinates[i]))};
+        const auto& x = b_.coordinates[i];
+        P.given[i] = std::array<Q, 3>{exact_rational(Traits::x(x)), exact_rational(Traits::y(x)), exact_rational(Traits::z(x))};
+        for (const Q& v : *P.given[i]) scale1 = (std::max)(scale1, std::abs(CGAL::to_double(v)));
         placed[i] = true;
         ++given;
       }
-    for (const auto& o : b_.orientations) { orient_idx_.push_back({o.a, o.b, o.c, o.d}); orient_sign_.push_back(o.sign); }
-    in_given_frame_ = given >= 3 && reachable(placed);
-    if (!in_given_frame_) {
+    P.scale = (std::max)(std::sqrt(scale2), scale1);
+    if (!(P.scale > 0) || !std::isfinite(P.scale)) P.scale = 1;
+    for (const auto& o : b_.orientations) { P.orient_idx.push_back({o.a, o.b, o.c, o.d}); P.orient_sign.push_back(o.sign); }
+    P.in_given_frame = given >= 3 && reachable(placed);
+    if (!P.in_given_frame) {
       // canonical frame; the given coordinates keep their handedness through an orientation
       extra_orientations();
       std::fill(placed.begin(), placed.end(), false);
       std::optional<std::array<std::size_t, 3>> base;
-      for (std::size_t i = 0; i < m_ && !base; ++i) for (std::size_t j = i + 1; j < m_ && !base; ++j)
-        for (std::size_t k = j + 1; k < m_ && !base; ++k)
-          if (known_[i][j] && known_[i][k] && known_[j][k] &&
-              triangle_sign<Traits::has_exact_ft>(*known_[i][j], *known_[i][k], *known_[j][k]) == CGAL::POSITIVE) {
-            std::vector<bool> trial(m_, false);
+      for (std::size_t i = 0; i < m && !base; ++i) for (std::size_t j = i + 1; j < m && !base; ++j)
+        for (std::size_t k = j + 1; k < m && !base; ++k)
+          if (proper_triangle(i, j, k)) {
+            std::vector<bool> trial(m, false);
             trial[i] = trial[j] = trial[k] = true;
             if (reachable(trial)) base = std::array<std::size_t, 3>{i, j, k};
           }
       if (!base)
         throw Input_error("body '" + b_.name + "': its points cannot be placed one after the other from three placed"
                           " points at known distances (a placement this version does not support)");
-      auto [i, j, k] = *base;
-      IT d01 = enclose<IT>(*known_[i][j]), d02 = enclose<IT>(*known_[i][k]), d12 = enclose<IT>(*known_[j][k]);
-      IT l = CGAL::sqrt(d01);
-      IT x = (d01 + d02 - d12) / (IT(2) * l);
-      IT y = CGAL::sqrt(nonnegative(d02 - x * x));
-      coords[i] = P{IT(0), IT(0), IT(0)};
-      coords[j] = P{l, IT(0), IT(0)};
-      coords[k] = P{x, y, IT(0)};
+      P.base = *base;
+      const auto [i, j, k] = *base;
+      P.d01 = *P.known[i][j];
+      P.c1 = (P.d01 + *P.known[i][k] - *P.known[j][k]) / (Q(2) * P.d01);
+      P.y2 = *P.known[i][k] - P.c1 * P.c1 * P.d01;  // > 0: a proper triangle
       placed[i] = placed[j] = placed[k] = true;
     }
-    place(coords, placed);
-    return out_;
+    // the order: the first point (by index) with a reference triangle, again and again
+    while (true) {
+      std::size_t next = m;
+      std::optional<std::array<std::size_t, 3>> tri;
+      for (std::size_t p = 0; p < m && next == m; ++p)
+        if (!placed[p]) { tri = reference_triangle(p, placed); if (tri) next = p; }
+      if (next == m) break;
+      P.steps.push_back(step(next, *tri));
+      placed[next] = true;
+    }
+    if (singular_points_ > 1) P.singular += "; so are " + std::to_string(singular_points_ - 1) + " more of its points";
+    return P;
   }
 
 private:
   const Collection& c_;
   const Body& b_;
-  std::size_t m_, max_;
-  std::vector<std::vector<std::optional<FT>>> known_;
-  std::vector<std::array<std::size_t, 4>> orient_idx_;
-  std::vector<CGAL::Sign> orient_sign_;
-  bool in_given_frame_ = false;
-  std::vector<Body_enclosure<IT>> out_;
+  Placement_plan plan_;
+  std::size_t singular_points_ = 0;
+
+  bool proper_triangle(std::size_t i, std::size_t j, std::size_t k) const
+  {
+    const auto& K = plan_.known;
+    return K[i][j] && K[i][k] && K[j][k] && triangle_sign<Traits::has_exact_ft>(*K[i][j], *K[i][k], *K[j][k]) == CGAL::POSITIVE;
+  }
 
   // Can every point be placed by repeated trilateration from the `placed` ones?
   bool reachable(std::vector<bool> placed) const
@@ -184,7 +237,7 @@ private:
     bool progress = true;
     while (progress) {
       progress = false;
-      for (std::size_t p = 0; p < m_; ++p)
+      for (std::size_t p = 0; p < plan_.m; ++p)
         if (!placed[p] && reference_triangle(p, placed)) { placed[p] = true; progress = true; }
     }
     return std::all_of(placed.begin(), placed.end(), [](bool x) { return x; });
@@ -193,13 +246,10 @@ private:
   std::optional<std::array<std::size_t, 3>> reference_triangle(std::size_t p, const std::vector<bool>& placed) const
   {
     std::vector<std::size_t> refs;
-    for (std::size_t q = 0; q < m_; ++q) if (placed[q] && known_[p][q]) refs.push_back(q);
+    for (std::size_t q = 0; q < plan_.m; ++q) if (placed[q] && plan_.known[p][q]) refs.push_back(q);
     for (std::size_t a = 0; a < refs.size(); ++a) for (std::size_t b = a + 1; b < refs.size(); ++b)
-      for (std::size_t c = b + 1; c < refs.size(); ++c) {
-        const auto& x = known_[refs[a]][refs[b]]; const auto& y = known_[refs[a]][refs[c]]; const auto& z = known_[refs[b]][refs[c]];
-        if (x && y && z && triangle_sign<Traits::has_exact_ft>(*x, *y, *z) == CGAL::POSITIVE)
-          return std::array<std::size_t, 3>{refs[a], refs[b], refs[c]};
-      }
+      for (std::size_t c = b + 1; c < refs.size(); ++c)
+        if (proper_triangle(refs[a], refs[b], refs[c])) return std::array<std::size_t, 3>{refs[a], refs[b], refs[c]};
     return std::nullopt;
   }
 
@@ -207,124 +257,396 @@ private:
   void extra_orientations()
   {
     std::vector<std::size_t> idx;
-    for (std::size_t k = 0; k < m_; ++k) if (b_.has_coordinates[k]) idx.push_back(k);
+    for (std::size_t k = 0; k < plan_.m; ++k) if (plan_.given[k]) idx.push_back(k);
     for (std::size_t a = 0; a < idx.size(); ++a) for (std::size_t bb = a + 1; bb < idx.size(); ++bb)
       for (std::size_t cc = bb + 1; cc < idx.size(); ++cc) for (std::size_t dd = cc + 1; dd < idx.size(); ++dd) {
-        const auto& A = b_.coordinates[idx[a]]; const auto& B = b_.coordinates[idx[bb]];
-        const auto& C = b_.coordinates[idx[cc]]; const auto& D = b_.coordinates[idx[dd]];
-        FT u[3] = {Traits::x(B) - Traits::x(A), Traits::y(B) - Traits::y(A), Traits::z(B) - Traits::z(A)};
-        FT v[3] = {Traits::x(C) - Traits::x(A), Traits::y(C) - Traits::y(A), Traits::z(C) - Traits::z(A)};
-        FT w[3] = {Traits::x(D) - Traits::x(A), Traits::y(D) - Traits::y(A), Traits::z(D) - Traits::z(A)};
+        const auto &A = *plan_.given[idx[a]], &B = *plan_.given[idx[bb]], &C = *plan_.given[idx[cc]], &D = *plan_.given[idx[dd]];
+        Q u[3], v[3], w[3];
+        for (int k = 0; k < 3; ++k) { u[k] = B[k] - A[k]; v[k] = C[k] - A[k]; w[k] = D[k] - A[k]; }
         CGAL::Sign s = CGAL::sign(u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) +
                                   u[2] * (v[0] * w[1] - v[1] * w[0]));
-        if (s != CGAL::ZERO) { orient_idx_.push_back({idx[a], idx[bb], idx[cc], idx[dd]}); orient_sign_.push_back(s); return; }
+        if (s != CGAL::ZERO) {
+          plan_.orient_idx.push_back({idx[a], idx[bb], idx[cc], idx[dd]});
+          plan_.orient_sign.push_back(s);
+          return;
+        }
       }
   }
 
-  // Does the placement certainly violate an orientation whose four points are placed?
-  bool violates_orientation(const std::vector<P>& x, const std::vector<bool>& placed) const
+  Placement_step step(std::size_t p, const std::array<std::size_t, 3>& t)
   {
-    for (std::size_t k = 0; k < orient_idx_.size(); ++k) {
-      const auto& o = orient_idx_[k];
-      if (!(placed[o[0]] && placed[o[1]] && placed[o[2]] && placed[o[3]])) continue;
-      IT det = dot(cross(sub(x[o[1]], x[o[0]]), sub(x[o[2]], x[o[0]])), sub(x[o[3]], x[o[0]]));
-      typename CGAL::Interval_traits<IT>::Lower lower;
-      typename CGAL::Interval_traits<IT>::Upper upper;
-      if (orient_sign_[k] == CGAL::POSITIVE && upper(det) < 0) return true;
-      if (orient_sign_[k] == CGAL::NEGATIVE && lower(det) > 0) return true;
+    const auto& K = plan_.known;
+    Placement_step s;
+    s.p = p; s.A = t[0]; s.B = t[1]; s.C = t[2];
+    const Q uu = *K[s.A][s.B], vv = *K[s.A][s.C], uv = (uu + vv - *K[s.B][s.C]) / Q(2);
+    const Q G = uu * vv - uv * uv;  // > 0: a proper triangle
+    const Q r1 = *K[p][s.A], r2 = *K[p][s.B], r3 = *K[p][s.C];
+    const Q alpha = (r1 - r2 + uu) / Q(2), beta = (r1 - r3 + vv) / Q(2);
+    s.a = (alpha * vv - beta * uv) / G;
+    s.b = (beta * uu - alpha * uv) / G;
+    const Q h2 = r1 - (s.a * s.a * uu + Q(2) * s.a * s.b * uv + s.b * s.b * vv);
+    s.s = h2 / G;
+    if constexpr (Traits::has_exact_ft) s.sign = CGAL::sign(h2);
+    else { // rounded input: a height within 1e-9 of the references' scale is zero, as in standardize
+      double scale = (std::max)({CGAL::to_double(r1), CGAL::to_double(uu), CGAL::to_double(vv)});
+      double v = CGAL::to_double(h2);
+      s.sign = std::abs(v) <= 1e-9 * scale ? CGAL::ZERO : (v > 0 ? CGAL::POSITIVE : CGAL::NEGATIVE);
+      if (s.sign == CGAL::ZERO) s.s = 0;
     }
+    const std::string who = "'" + plan_.labels[p] + "' over the plane of '" + plan_.labels[s.A] + "', '" + plan_.labels[s.B] +
+                            "' and '" + plan_.labels[s.C] + "'";
+    if (s.sign == CGAL::NEGATIVE && plan_.inconsistent.empty())
+      plan_.inconsistent = "body '" + b_.name + "': the squared distances of " + who + " (" + to_text(r1) + ", " + to_text(r2) + ", " +
+                           to_text(r3) + ") admit no real point (its squared height over that plane would be " + to_text(h2) + ")";
+    if (s.sign == CGAL::ZERO && singular_points_++ == 0)
+      plan_.singular = "body '" + b_.name + "': the height of " + who + " is exactly 0 (a double placement: its two sides coincide)";
+    return s;
+  }
+
+  static std::string to_text(const Q& q)
+  {
+    std::ostringstream os;
+    os << CGAL::to_double(q);
+    return os.str();
+  }
+};
+
+// The placements of a plan in the interval type W (the caller sets W's rounding or precision).
+template <class W>
+class Placement_enumerator
+{
+  typedef std::array<W, 3> P;
+
+public:
+  Placement_enumerator(const Placement_plan& plan, std::size_t max_placements) : plan_(plan), max_(max_placements) {}
+
+  std::vector<Body_enclosure<W>> run()
+  {
+    const Placement_plan& Pl = plan_;
+    for (const auto& s : Pl.steps) {
+      a_.push_back(from_rational(s.a));
+      b_.push_back(from_rational(s.b));
+      t_.push_back(s.sign == CGAL::POSITIVE ? W(CGAL::sqrt(from_rational(s.s))) : W(0));
+    }
+    // per step: the distances to check (placed points other than the references) and the
+    // orientations whose last point it places
+    std::vector<bool> placed(Pl.m, false);
+    x_.assign(Pl.m, P{W(0), W(0), W(0)});
+    if (Pl.in_given_frame) {
+      for (std::size_t i = 0; i < Pl.m; ++i)
+        if (Pl.given[i]) {
+          for (int k = 0; k < 3; ++k) x_[i][std::size_t(k)] = from_rational((*Pl.given[i])[std::size_t(k)]);
+          placed[i] = true;
+        }
+    } else {
+      const W l = CGAL::sqrt(from_rational(Pl.d01));
+      x_[Pl.base[1]] = P{l, W(0), W(0)};
+      x_[Pl.base[2]] = P{from_rational(Pl.c1) * l, W(CGAL::sqrt(from_rational(Pl.y2))), W(0)};
+      for (std::size_t i : Pl.base) placed[i] = true;
+    }
+    for (std::size_t o = 0; o < Pl.orient_idx.size(); ++o)
+      if (all_placed(Pl.orient_idx[o], placed)) initial_orientations_.push_back(o);
+    for (const auto& s : Pl.steps) {
+      std::vector<std::size_t> checks;
+      for (std::size_t q = 0; q < Pl.m; ++q)
+        if (placed[q] && q != s.A && q != s.B && q != s.C && Pl.known[s.p][q]) checks.push_back(q);
+      checks_.push_back(checks);
+      placed[s.p] = true;
+      std::vector<std::size_t> orient;
+      for (std::size_t o = 0; o < Pl.orient_idx.size(); ++o) {
+        const auto& q = Pl.orient_idx[o];
+        if (std::find(q.begin(), q.end(), s.p) != q.end() && all_placed(q, placed)) orient.push_back(o);
+      }
+      orientations_.push_back(orient);
+    }
+    for (std::size_t o : initial_orientations_) if (violates(o)) return out_;
+    place(0);
+    return out_;
+  }
+
+  bool truncated() const { return truncated_; }
+
+private:
+  const Placement_plan& plan_;
+  std::size_t max_;
+  bool truncated_ = false;
+  std::vector<W> a_, b_, t_;
+  std::vector<std::vector<std::size_t>> checks_, orientations_;
+  std::vector<std::size_t> initial_orientations_;
+  std::vector<P> x_;
+  std::vector<Body_enclosure<W>> out_;
+
+  static W from_rational(const CGAL::Gmpq& q)
+  {
+    if constexpr (is_interval_nt<W>::value) return W(CGAL::to_interval(q));
+    else return W(q);
+  }
+  static bool all_placed(const std::array<std::size_t, 4>& q, const std::vector<bool>& placed)
+  { return placed[q[0]] && placed[q[1]] && placed[q[2]] && placed[q[3]]; }
+
+  // Does the placement so far certainly violate orientation o?
+  bool violates(std::size_t o) const
+  {
+    const auto& q = plan_.orient_idx[o];
+    W det = dot(cross(sub(x_[q[1]], x_[q[0]]), sub(x_[q[2]], x_[q[0]])), sub(x_[q[3]], x_[q[0]]));
+    typename CGAL::Interval_traits<W>::Lower lower;
+    typename CGAL::Interval_traits<W>::Upper upper;
+    if (plan_.orient_sign[o] == CGAL::POSITIVE && upper(det) < 0) return true;
+    if (plan_.orient_sign[o] == CGAL::NEGATIVE && lower(det) > 0) return true;
     return false;
   }
 
-  // Is every known distance between placed points (one of them p) contained in its enclosure?
-  bool fits(std::size_t p, const P& xp, const std::vector<P>& x, const std::vector<bool>& placed) const
+  // Depth first over the sides of each step: a side is kept unless a known distance or an
+  // orientation certainly excludes it; a step with s = 0 has one side.
+  void place(std::size_t k)
   {
-    for (std::size_t q = 0; q < m_; ++q)
-      if (placed[q] && q != p && known_[p][q]) {
-        P d = sub(xp, x[q]);
-        if (!internal::overlap(dot(d, d), enclose<IT>(*known_[p][q]))) return false;
-      }
-    return true;
-  }
-
-  // Depth first over the sides of each trilaterated point: a side is kept when it fits every
-  // known distance and orientation so far; both are kept when both fit.
-  void place(std::vector<P> x, std::vector<bool> placed)
-  {
-    if (out_.size() >= max_) return;
-    std::size_t next = m_;
-    std::optional<std::array<std::size_t, 3>> tri;
-    for (std::size_t p = 0; p < m_ && next == m_; ++p)
-      if (!placed[p]) { tri = reference_triangle(p, placed); if (tri) next = p; }
-    if (next == m_) {
-      Body_enclosure<IT> e;
-      e.coordinates = x;
+    if (truncated_) return;
+    const auto& steps = plan_.steps;
+    if (k == steps.size()) {
+      if (out_.size() >= max_) { truncated_ = true; return; }
+      Body_enclosure<W> e;
+      e.coordinates = x_;
       e.variant = int(out_.size());
-      e.in_given_frame = in_given_frame_;
+      e.in_given_frame = plan_.in_given_frame;
       e.consistent = true;
-      out_.push_back(e);
+      e.singular = !plan_.singular.empty();
+      out_.push_back(std::move(e));
       return;
     }
-    const std::size_t p = next;
-    const P& P1 = x[(*tri)[0]];
-    P u = sub(x[(*tri)[1]], P1), v = sub(x[(*tri)[2]], P1);
-    P n = cross(u, v);
-    IT r1 = enclose<IT>(*known_[p][(*tri)[0]]), r2 = enclose<IT>(*known_[p][(*tri)[1]]), r3 = enclose<IT>(*known_[p][(*tri)[2]]);
-    IT uu = dot(u, u), vv = dot(v, v), uv = dot(u, v), nn = dot(n, n);
-    IT alpha = (r1 - r2 + uu) / IT(2), beta = (r1 - r3 + vv) / IT(2);
-    // X - P1 = a u + b v + t n with a uu + b uv = alpha, a uv + b vv = beta (determinant nn)
-    IT a = (alpha * vv - beta * uv) / nn, bcoef = (beta * uu - alpha * uv) / nn;
-    P w{a * u[0] + bcoef * v[0], a * u[1] + bcoef * v[1], a * u[2] + bcoef * v[2]};
-    IT t = CGAL::sqrt(nonnegative((r1 - dot(w, w)) / nn));
-    typename CGAL::Interval_traits<IT>::Lower lower;
-    bool on_plane = !(lower(t) > 0); // t may be 0: one side only
+    const Placement_step& s = steps[k];
+    const P& A = x_[s.A];
+    const P u = sub(x_[s.B], A), v = sub(x_[s.C], A), n = cross(u, v);
+    P w;
+    for (std::size_t i = 0; i < 3; ++i) w[i] = A[i] + a_[k] * u[i] + b_[k] * v[i];
     for (int side : {1, -1}) {
-      if (side < 0 && on_plane) break;
-      P xp{P1[0] + w[0] + IT(side) * t * n[0], P1[1] + w[1] + IT(side) * t * n[1], P1[2] + w[2] + IT(side) * t * n[2]};
-      if (!fits(p, xp, x, placed)) continue;
-      std::vector<P> x2 = x;
-      std::vector<bool> placed2 = placed;
-      x2[p] = xp;
-      placed2[p] = true;
-      if (violates_orientation(x2, placed2)) continue;
-      place(x2, placed2);
+      if (side < 0 && s.sign != CGAL::POSITIVE) break;
+      P xp;
+      for (std::size_t i = 0; i < 3; ++i) xp[i] = side > 0 ? w[i] + t_[k] * n[i] : w[i] - t_[k] * n[i];
+      bool fits = true;
+      for (std::size_t q : checks_[k]) {
+        P d = sub(xp, x_[q]);
+        if (!internal::overlap(dot(d, d), from_rational(*plan_.known[s.p][q]))) { fits = false; break; }
+      }
+      if (!fits) continue;
+      x_[s.p] = xp;
+      bool ok = true;
+      for (std::size_t o : orientations_[k]) if (violates(o)) { ok = false; break; }
+      if (ok) place(k + 1);
     }
   }
 };
+
+// The widest coordinate enclosure of a list of placements, in units of `scale`.
+template <class W>
+double relative_width(const std::vector<Body_enclosure<W>>& all, double scale)
+{
+  double w = 0;
+  for (const auto& e : all)
+    for (const auto& x : e.coordinates)
+      for (const W& v : x) {
+        std::pair<double, double> i = CGAL::to_interval(v);
+        double d = i.second - i.first;
+        if (!(d <= std::numeric_limits<double>::max())) return std::numeric_limits<double>::infinity();
+        w = (std::max)(w, d / scale);
+      }
+  return w;
+}
+
+template <class IT, class W>
+std::vector<Body_enclosure<IT>> convert_enclosures(std::vector<Body_enclosure<W>>&& all)
+{
+  if constexpr (std::is_same<IT, W>::value) return std::move(all);
+  else {
+    std::vector<Body_enclosure<IT>> out;
+    for (const auto& e : all) {
+      Body_enclosure<IT> f;
+      f.consistent = e.consistent;
+      f.variant = e.variant;
+      f.in_given_frame = e.in_given_frame;
+      f.singular = e.singular;
+      for (const auto& x : e.coordinates) {
+        std::array<IT, 3> y;
+        for (std::size_t k = 0; k < 3; ++k) {
+          if constexpr (is_interval_nt<IT>::value) y[k] = IT(CGAL::to_interval(x[k]));
+          else y[k] = IT(CGAL::to_interval(x[k]));  // a double interval into a wider type: exact
+        }
+        f.coordinates.push_back(y);
+      }
+      out.push_back(std::move(f));
+    }
+    return out;
+  }
+}
+
+// A text that determines a body's placements: its labels, exact coordinates, distances and
+// orientations (the key of the placement cache).
+template <class Traits>
+std::string placement_key(const Rigid_body_collection<Traits>& c, const typename Rigid_body_collection<Traits>::Body& b)
+{
+  std::ostringstream os;
+  os << b.name << '\n';
+  for (std::size_t i = 0; i < b.points.size(); ++i) {
+    os << c.label(b.points[i]);
+    if (b.has_coordinates[i])
+      os << ' ' << exact_rational(Traits::x(b.coordinates[i])) << ' ' << exact_rational(Traits::y(b.coordinates[i])) << ' '
+         << exact_rational(Traits::z(b.coordinates[i]));
+    os << '\n';
+  }
+  for (const auto& d : b.squared_distances) os << d.a << '-' << d.b << ' ' << exact_rational(d.squared) << '\n';
+  for (const auto& o : b.orientations) os << o.a << ' ' << o.b << ' ' << o.c << ' ' << o.d << ' ' << int(o.sign) << '\n';
+  return os.str();
+}
+
+} // namespace internal
+
+/// \ingroup PkgRigidIncidenceRef
+/// Every placement of one body, as `enumerate_placements()` returns them, with how they were enclosed.
+template <class IT>
+struct Placement_enumeration
+{
+  std::vector<Body_enclosure<IT>> placements; ///< variants 0, 1, ...
+  /// false: the enumeration stopped at `max_placements` and more placements exist
+  bool complete = true;
+  /// bits of the interval arithmetic the enclosures were computed in (53: double intervals);
+  /// raised automatically until the enclosures are narrow enough (see `enumerate_placements()`)
+  unsigned precision = 53;
+  /// the widest coordinate enclosure, relative to the body's size
+  double relative_width = 0;
+  /// nonempty: the body's distances admit no real placement (decided exactly), and why
+  std::string inconsistent;
+  /// nonempty: every placement is a double one (a point exactly on the plane of its three
+  /// references, decided exactly), and where
+  std::string singular;
+};
+
+/// \ingroup PkgRigidIncidenceRef
+/// The default limit on the placements of one body (2^14): a body with more is enumerated
+/// up to it and reported incomplete.
+constexpr std::size_t default_maximal_placements = std::size_t(1) << 14;
+
+/// \ingroup PkgRigidIncidenceRef
+/// The highest precision, in bits, the placement enumeration raises its arithmetic to.
+constexpr unsigned maximal_placement_precision = 4096;
+
+namespace internal {
+
+// The enumeration of enumerate_placements(), shared with the per-thread cache.
+template <class IT, class Traits>
+std::shared_ptr<const Placement_enumeration<IT>> cached_placements(const Rigid_body_collection<Traits>& c, std::size_t body,
+                                                                  std::size_t max_placements)
+{
+  const auto& b = c.body(body);
+  std::string key = placement_key(c, b) + std::to_string(max_placements);
+  unsigned start = 53;
+#ifdef CGAL_USE_MPFI
+  if constexpr (!is_interval_nt<IT>::value) {
+    start = unsigned(CGAL::Gmpfi::get_default_precision());
+    key += " " + std::to_string(start);
+  }
+#endif
+  thread_local std::deque<std::pair<std::string, std::shared_ptr<const Placement_enumeration<IT>>>> cache;
+  for (const auto& e : cache) if (e.first == key) return e.second;
+
+  Placement_plan plan = Placement_planner<Traits>(c, b).run();
+  auto out = std::make_shared<Placement_enumeration<IT>>();
+  out->inconsistent = plan.inconsistent;
+  out->singular = plan.singular;
+  if (plan.inconsistent.empty()) {
+    const double target = is_interval_nt<IT>::value ? std::ldexp(1.0, -44) : std::ldexp(1.0, 12 - int(start));
+    bool done = false;
+    if constexpr (is_interval_nt<IT>::value) {
+      typename CGAL::Interval_nt<false>::Protector protect;
+      Placement_enumerator<CGAL::Interval_nt<false>> e(plan, max_placements);
+      auto all = e.run();
+      out->relative_width = relative_width(all, plan.scale);
+      out->complete = !e.truncated();
+      out->precision = 53;
+      out->placements = convert_enclosures<IT>(std::move(all));
+      done = out->relative_width <= target;
+    }
+#ifdef CGAL_USE_MPFI
+    for (unsigned bits = is_interval_nt<IT>::value ? 128 : start; !done; bits *= 2) {
+      Solver_precision_guard<CGAL::Gmpfi> guard(bits);
+      Placement_enumerator<CGAL::Gmpfi> e(plan, max_placements);
+      auto all = e.run();
+      out->relative_width = relative_width(all, plan.scale);
+      out->complete = !e.truncated();
+      out->precision = bits;
+      out->placements = convert_enclosures<IT>(std::move(all));
+      done = out->relative_width <= target || 2 * bits > (std::max)(maximal_placement_precision, 4 * start);
+    }
+#endif
+    (void)done;
+  }
+  cache.emplace_back(key, out);
+  if (cache.size() > 32) cache.pop_front();
+  return out;
+}
 
 } // namespace internal
 
 /*!
 \ingroup PkgRigidIncidenceRef
-\brief Encloses every placement of body `body` of `c` (up to rigid motion) in intervals of type `IT`.
+\brief Encloses every placement of body `body` of `c` (up to rigid motion) in intervals of
+type `IT`, raising the precision of the arithmetic until the enclosures are narrow.
 
 Points with coordinates are enclosed as given, in the body's frame, when every other point
 can be placed from them; otherwise the body is placed in a canonical frame from its
 distances: a first point at the origin, a second on the x axis, a third in the xy plane
 (y > 0), and the given coordinates enter as distances and an orientation (so that a user
 body never comes back mirrored). Each further point is trilaterated from three placed
-non-collinear points at known distances; both sides of their plane are followed whenever both
-fit every known distance and orientation so far, so the placements returned are all those
-the body's distances allow (a spatial clique of distances gives its two mirror images; two
-bodies on a hinge closed by a distance give the hinge's two angles). Square roots and
-divisions are evaluated with outward rounding, so each enclosure contains the exact
-coordinates of its placement; where intervals cannot tell two sides apart (a point nearly
-on the plane of its references) both are returned, never neither.
+non-collinear points at known distances: its coordinates in the frame of the three points
+(two in their plane, its squared height over it) are rationals of the six distances, so
+whether it has two sides, one (a height exactly 0: a double placement, `singular`) or none
+(the body is inconsistent) is decided exactly, for a kernel with exact numbers; for a kernel
+of doubles a squared height within 1e-9 of the references' scale counts as 0. Both sides are
+followed, and a side is dropped only where a further known distance or an orientation
+certainly excludes it (its interval misses the value); a distance whose enclosure still
+contains the value is taken as met, so a mismatch narrower than the final enclosures (about
+2^-precision of the body's size) is not detected.
 
-\tparam IT `CGAL::Interval_nt<false>` (double intervals), or `CGAL::Gmpfi` (MPFI: the exact
-input values are rounded outward at `Gmpfi`'s default precision, which a caller raises with
-`CGAL::Gmpfi::set_default_precision()` to make the enclosures as tight as asked).
+The chain of trilaterations widens the enclosures (each point inherits the widths of its
+references), so they are computed first in double intervals and, if the widest one exceeds
+2^-44 of the body's size (for `IT = CGAL::Gmpfi`: 2^(12 - p) at its default precision p),
+again with `CGAL::Gmpfi` at 128, 256, ... bits up to `maximal_placement_precision`; the
+result says which precision it used and how wide it is. Without MPFI (`CGAL_USE_MPFI`
+undefined) the double enclosures are returned as they are.
+
+The enumerations are cached per thread by the body's content, so that asking for one
+placement after another costs one enumeration.
+
+\tparam IT `CGAL::Interval_nt<false>` (double intervals), or `CGAL::Gmpfi`
 \param c the collection (typically the output of `standardize()`)
 \param body the index of the body in `c`
-\param max_placements stop after this many placements
+\param max_placements stop after this many placements (then `complete` is false)
 \throws Input_error if the body's distances do not let its points be placed one after the other.
 */
 template <class IT, class Traits>
-std::vector<Body_enclosure<IT>> enclose_all_placements(const Rigid_body_collection<Traits>& c, std::size_t body,
-                                                       std::size_t max_placements = 64)
+Placement_enumeration<IT> enumerate_placements(const Rigid_body_collection<Traits>& c, std::size_t body,
+                                               std::size_t max_placements = default_maximal_placements)
 {
-  internal::Placer<IT, Traits> placer(c, c.body(body), max_placements);
-  return placer.run();
+  return *internal::cached_placements<IT>(c, body, max_placements);
+}
+
+/*!
+\ingroup PkgRigidIncidenceRef
+\brief Every placement of body `body` of `c` (up to rigid motion), enclosed in intervals of
+type `IT`: the `placements` of `enumerate_placements()`, which says how they are computed.
+
+\param c the collection (typically the output of `standardize()`)
+\param body the index of the body in `c`
+\param max_placements the most placements the caller accepts
+\throws Input_error if the body's distances do not let its points be placed one after the
+other, or if it has more than `max_placements` placements (never a silently shortened list).
+*/
+template <class IT, class Traits>
+std::vector<Body_enclosure<IT>> enclose_all_placements(const Rigid_body_collection<Traits>& c, std::size_t body,
+                                                       std::size_t max_placements = default_maximal_placements)
+{
+  auto e = internal::cached_placements<IT>(c, body, max_placements);
+  if (!e->complete)
+    throw Input_error("body '" + c.body(body).name + "' has more than " + std::to_string(max_placements) + " placements");
+  return e->placements;
 }
 
 /*!
@@ -342,7 +664,9 @@ distances admit no placement gives an enclosure with `consistent == false`.
 template <class IT, class Traits>
 Body_enclosure<IT> enclose_coordinates(const Rigid_body_collection<Traits>& c, std::size_t body, int variant = 0)
 {
-  std::vector<Body_enclosure<IT>> all = enclose_all_placements<IT>(c, body, std::size_t(variant) + 1);
+  const std::size_t cap = (std::max)(default_maximal_placements, std::size_t((std::max)(variant, 0)) + 1);
+  auto en = internal::cached_placements<IT>(c, body, cap);
+  const std::vector<Body_enclosure<IT>>& all = en->placements;
   if (variant < 0 || std::size_t(variant) >= all.size()) {
     // the body's distances admit no placement (or fewer): report it as inconsistent
     if (all.empty()) {

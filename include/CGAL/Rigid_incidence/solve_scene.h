@@ -49,14 +49,19 @@ struct Scene_solve_parameters
   std::vector<Orientation_inequality> inequalities;
   /// parameters of the solver, for each chart combination
   Subdivision_solver_parameters solver;
-  /// two roots are one configuration if no point moves more than this, relative to the size
-  /// of the scene (the bounding box diagonal of the configuration)
+  /// two roots of two chart combinations (with the same placements) are one configuration if no
+  /// point moves more than this, relative to the size of the scene (the bounding box diagonal
+  /// of the configuration); roots of one system, and of two placements of a body, are never merged
   double merge_tolerance = 1e-9;
   /// a root whose configuration has a residual above this in the original system (relative
   /// to the size of the scene for incidences, to its square for squared distances) is not a
   /// configuration of the scene (a body outside the covering set that only fits mirrored);
   /// it is counted in `Scene_solve_statistics::spurious`
   double residual_threshold = 1e-6;
+  /// the most placements enumerated for one body known by distances (see
+  /// `enumerate_placements()`); a body with more is solved for the first ones only and the
+  /// result is not complete (`Scene_solve_result::limits` says so)
+  std::size_t maximal_placements = default_maximal_placements;
 };
 
 /// \ingroup PkgRigidIncidenceSolver
@@ -74,6 +79,12 @@ struct Scene_configuration
   Residual_report residuals;                          ///< in the original system
   double max_residual = 0;                            ///< `residuals.max()`
   std::size_t found = 1;                              ///< chart combinations it was found in
+  /// a double configuration: a body's placement in it is a double one (a point exactly on the
+  /// plane of the three points it is placed from, decided exactly); the enclosure is certified,
+  /// but the configuration is not a simple root: a perturbation of the distances splits it
+  /// into two or none
+  bool singular = false;
+  std::string singular_reason;                        ///< where, when `singular`
 };
 
 /// \ingroup PkgRigidIncidenceSolver
@@ -135,6 +146,19 @@ struct Scene_solve_statistics
 };
 
 /// \ingroup PkgRigidIncidenceSolver
+/// How the placements of one body known by distances were enumerated (see `enumerate_placements()`).
+struct Scene_placement_report
+{
+  std::string body;             ///< the body of the standard collection
+  std::size_t placements = 0;   ///< placements found (all of them when `complete`)
+  bool complete = true;         ///< false: stopped at `Scene_solve_parameters::maximal_placements`
+  unsigned precision = 53;      ///< bits of the interval arithmetic that enclosed them (53: double)
+  double relative_width = 0;    ///< widest coordinate enclosure, relative to the body's size
+  std::string singular;         ///< nonempty: every placement is a double one, and where
+  std::string inconsistent;     ///< nonempty: no real placement (decided exactly), and why
+};
+
+/// \ingroup PkgRigidIncidenceSolver
 /// What `solve_scene()` found.
 struct Scene_solve_result
 {
@@ -150,10 +174,17 @@ struct Scene_solve_result
   std::vector<std::string> variables;              ///< the reduced system's parameters
   std::size_t equations = 0;                       ///< the reduced system's equations
   Scene_solve_statistics statistics;              ///< counters and times per stage
-  /// every configuration certified and nothing unresolved
+  /// per body known by distances: its placements, the precision that enclosed them
+  std::vector<Scene_placement_report> placements;
+  /// every limit that cut the search short, and what it left out (then the result is not complete)
+  std::vector<std::string> limits;
+  /// nonempty: the scene has no real configuration, decided exactly, and why (the result is
+  /// complete with no configuration)
+  std::string no_configuration;
+  /// every configuration certified, nothing unresolved and no limit reached
   bool complete() const
   {
-    if (fast || !unresolved.empty() || !diagnosis.empty()) return false;
+    if (fast || !unresolved.empty() || !diagnosis.empty() || !limits.empty()) return false;
     for (const auto& c : configurations) if (!c.certified) return false;
     for (const auto& c : curves) if (!c.certified) return false;
     return true;
@@ -162,15 +193,29 @@ struct Scene_solve_result
 
 namespace internal {
 
-// The number of placements of every covering body known only by distances (1 for the others).
+// The placements of every covering body known only by distances (counts: 1 for the others).
 template <class Traits>
-std::vector<int> placement_counts(const Rigid_body_collection<Traits>& c, const Incidence_tree& tree)
+std::vector<int> placement_counts(const Rigid_body_collection<Traits>& c, const Incidence_tree& tree, std::size_t maximal = default_maximal_placements,
+                                  std::vector<Scene_placement_report>* reports = nullptr, std::vector<std::string>* singular = nullptr)
 {
   std::vector<int> n(c.number_of_bodies(), 1);
-  CGAL::Protect_FPU_rounding<true> guard;
+  if (singular) singular->assign(c.number_of_bodies(), std::string());
   for (std::size_t b : tree.covering_set) {
     if (c.body(b).all_coordinates()) continue;
-    n[b] = (std::max)(1, int(enclose_all_placements<CGAL::Interval_nt<false>>(c, b).size()));
+    auto e = cached_placements<CGAL::Interval_nt<false>>(c, b, maximal);
+    n[b] = (std::max)(1, int(e->placements.size()));
+    if (singular) (*singular)[b] = e->singular;
+    if (reports) {
+      Scene_placement_report r;
+      r.body = c.body(b).name;
+      r.placements = e->placements.size();
+      r.complete = e->complete;
+      r.precision = e->precision;
+      r.relative_width = e->relative_width;
+      r.singular = e->singular;
+      r.inconsistent = e->inconsistent;
+      reports->push_back(r);
+    }
   }
   return n;
 }
@@ -422,7 +467,15 @@ Scene_solve_result solve_scene(const Rigid_body_collection<Traits>& original, co
   Scene_solve_statistics& st = out.statistics;
 
   auto t0 = Clock::now();
-  std::vector<int> radix_p = internal::placement_counts(c, tree);
+  std::vector<std::string> singular_body;
+  std::vector<int> radix_p = internal::placement_counts(c, tree, parameters.maximal_placements, &out.placements, &singular_body);
+  for (const auto& r : out.placements) {
+    if (!r.complete)
+      out.limits.push_back("body '" + r.body + "' has more than " + std::to_string(r.placements) +
+                           " placements (maximal_placements): only the first " + std::to_string(r.placements) + " were solved");
+    if (!r.inconsistent.empty() && out.no_configuration.empty()) out.no_configuration = r.inconsistent;
+  }
+  if (!out.no_configuration.empty()) return out;
   std::vector<int> placements(c.number_of_bodies(), 0);
   Reduced_system<Traits, NT> first(c, tree, selection);
   st.reduce_seconds += since(t0);
@@ -568,6 +621,11 @@ Scene_solve_result solve_scene(const Rigid_body_collection<Traits>& original, co
         s.placements = placements;
         s.variables = sys.variable_names;
         for (const auto& e : root.enclosure) s.parameters.push_back(CGAL::to_interval(e));
+        for (std::size_t b = 0; b < singular_body.size(); ++b)
+          if (!singular_body[b].empty()) {
+            s.singular = true;
+            s.singular_reason += (s.singular_reason.empty() ? "" : "; ") + singular_body[b];
+          }
         s.configuration = configuration(r, root.approximation);
         s.residuals = residuals(original, s.configuration);
         s.max_residual = s.residuals.max();
@@ -581,6 +639,9 @@ Scene_solve_result solve_scene(const Rigid_body_collection<Traits>& original, co
         }
         bool merged = false;
         for (auto& f : found) {
+          // one root seen from two charts; never two roots of one system, nor two placements
+          // of a body (distinct shapes, however close: a near-degenerate body's mirror pair)
+          if (f.s.placements != s.placements || f.s.charts == s.charts) continue;
           if (internal::configuration_distance(f.s.configuration, s.configuration) <= parameters.merge_tolerance * (std::max)(size, f.size)) {
             ++f.s.found;
             ++st.duplicates;

@@ -566,8 +566,9 @@ private:
         if (!known(dm, {{a, b}, {a, c}, {b, c}})) continue;
         CGAL::Sign s = triangle_sign<Traits::has_exact_ft>(*dm[a][b], *dm[a][c], *dm[b][c]);
         if (s == CGAL::NEGATIVE)
-          throw Input_error(who + ": the fixed distances between '" + c_.label(k[a]) + "', '" + c_.label(k[b]) + "' and '" +
-                            c_.label(k[c]) + "' violate the triangle inequality: no real configuration");
+          throw No_real_configuration(who + ": the fixed distances between '" + c_.label(k[a]) + "', '" + c_.label(k[b]) + "' and '" +
+                                      c_.label(k[c]) + "' (squared " + to_text(*dm[a][b]) + ", " + to_text(*dm[a][c]) + ", " +
+                                      to_text(*dm[b][c]) + ") violate the triangle inequality: no real configuration");
         if (s == CGAL::POSITIVE) planar_nondegenerate = true;
       }
     if (!planar_nondegenerate && complete)
@@ -582,8 +583,9 @@ private:
           if (!known(dm, {{a, b}, {a, c}, {a, d}, {b, c}, {b, d}, {c, d}})) continue;
           CGAL::Sign s = tetrahedron_sign<Traits::has_exact_ft>(*dm[a][b], *dm[a][c], *dm[a][d], *dm[b][c], *dm[b][d], *dm[c][d]);
           if (s == CGAL::NEGATIVE)
-            throw Input_error(who + ": the fixed distances among '" + c_.label(k[a]) + "', '" + c_.label(k[b]) + "', '" +
-                              c_.label(k[c]) + "' and '" + c_.label(k[d]) + "' admit no real configuration");
+            throw No_real_configuration(who + ": the fixed distances among '" + c_.label(k[a]) + "', '" + c_.label(k[b]) + "', '" +
+                                        c_.label(k[c]) + "' and '" + c_.label(k[d]) + "' admit no real configuration (a negative"
+                                        " Cayley-Menger volume)");
           if (s == CGAL::POSITIVE) spatial = true;
         }
     } else spatial = true; // conservative: report the mirror ambiguity
