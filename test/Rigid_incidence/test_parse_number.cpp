@@ -161,6 +161,30 @@ int main()
     expect_refused("1e-" + std::to_string(lim + 1));
   }
 
+  // the digit limit (a coordinate of ten million digits made every exact operation crawl):
+  // max_number_digits significant digits are accepted, one more is refused, in a decimal's
+  // mantissa and in either part of a rational; leading zeros do not count
+  {
+    const std::size_t lim = RIi::max_number_digits;
+    const std::string nines(lim, '9');
+    CGAL::Gmpz n9(0);
+    mpz_ui_pow_ui(n9.mpz(), 10, lim);
+    n9 -= CGAL::Gmpz(1);
+    expect_value(nines, CGAL::Gmpq(n9));
+    expect_value("000" + nines, CGAL::Gmpq(n9));
+    expect_value("0." + nines, CGAL::Gmpq(n9, pow10(long(lim))));
+    expect_value("1/" + nines, CGAL::Gmpq(CGAL::Gmpz(1), n9));
+    expect_refused(nines + "9");
+    expect_refused("1." + nines);
+    expect_refused("-" + nines + "9/7");
+    expect_refused("7/" + nines + "9");
+    CGAL::Gmpq q;
+    std::string why;
+    CHECK(!RIi::parse_exact_number("1." + nines, q, why) && why.find("significant digits") != std::string::npos,
+          "the digit limit's reason: " << why);
+    CHECK(RIi::parse_exact_number("1." + nines, q, why, 0), "no digit limit with max_digits = 0: " << why);
+  }
+
   // ---------------------------------------------------------------- refused
   const std::vector<std::string> bad = {
     "", "1.", ".", "1e", "abc", "1/0", "1/2/3", "NaN", "nan", "-nan", "inf", "Infinity", "-Infinity", "+inf",

@@ -1138,8 +1138,10 @@ reaches g = 0 ends there, to `parameters.minimal_width`.
 least two variables, an identically zero equation, or a finite nonempty box
 */
 template <class IT = CGAL::Interval_nt<false>, class NT>
-Curve_result<IT> trace_curves(const Polynomial_system<NT>& system, const Curve_tracer_parameters& parameters = Curve_tracer_parameters())
+Curve_result<IT> trace_curves(const Polynomial_system<NT>& system_in, const Curve_tracer_parameters& parameters = Curve_tracer_parameters())
 {
+  Polynomial_system<NT> scaled;  // exact powers of two against coefficients beyond doubles
+  const Polynomial_system<NT>& system = internal::scaled_to_unit(system_in, scaled);
   const std::size_t n = system.number_of_variables();
   if (n < 2 || system.number_of_equations() + 1 != n)
     throw Input_error("trace_curves: " + std::to_string(system.number_of_equations()) + " equations in " + std::to_string(n) +

@@ -17,6 +17,8 @@
 #ifndef CGAL_RIGID_INCIDENCE_POLYNOMIAL_SYSTEM_H
 #define CGAL_RIGID_INCIDENCE_POLYNOMIAL_SYSTEM_H
 
+#include <CGAL/Gmpq.h>
+#include <CGAL/Gmpz.h>
 #include <CGAL/Interval_nt.h>
 #include <CGAL/Interval_traits.h>
 #include <CGAL/Rigid_incidence/Input_error.h>
@@ -26,6 +28,7 @@
 #include <ostream>
 #include <sstream>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -353,6 +356,57 @@ Sparse_polynomial<NT> determinant(const std::vector<std::vector<Sparse_polynomia
   }
   return minor.begin()->second;
 }
+
+namespace internal {
+
+// An exact power of two near |q| (q != 0): 2^e with e = bits(num) - bits(den).
+inline long binary_exponent(const CGAL::Gmpq& q)
+{
+  return long(mpz_sizeinbase(mpq_numref(q.mpq()), 2)) - long(mpz_sizeinbase(mpq_denref(q.mpq()), 2));
+}
+
+// The system with each equation and inequality multiplied by an exact power of two that brings
+// its largest coefficient near 1, when some coefficient's magnitude is beyond 2^+-60 (for exact
+// rational coefficients; others are returned as they are). The roots, their multiplicities and
+// the inequalities' signs are unchanged, and the coefficients' double enclosures no longer
+// overflow or underflow: 1e400 x - 1e400 was an interval [-inf, inf] ("positive-dimensional").
+template <class NT>
+const Polynomial_system<NT>& scaled_to_unit(const Polynomial_system<NT>& s, Polynomial_system<NT>& out)
+{
+  if constexpr (!std::is_same<NT, CGAL::Gmpq>::value) { (void)out; return s; }
+  else {
+    auto exponent_range = [](const Sparse_polynomial<NT>& f, long& lo, long& hi) {
+      bool any = false;
+      for (const auto& t : f.terms()) {
+        if (t.second == 0) continue;
+        long e = binary_exponent(t.second);
+        lo = any ? (std::min)(lo, e) : e;
+        hi = any ? (std::max)(hi, e) : e;
+        any = true;
+      }
+      return any;
+    };
+    bool needed = false;
+    for (const auto* list : {&s.equations, &s.inequalities})
+      for (const auto& f : *list) {
+        long lo = 0, hi = 0;
+        if (exponent_range(f, lo, hi) && (hi > 60 || lo < -60)) needed = true;
+      }
+    if (!needed) return s;
+    out = s;
+    for (auto* list : {&out.equations, &out.inequalities})
+      for (auto& f : *list) {
+        long lo = 0, hi = 0;
+        if (!exponent_range(f, lo, hi) || hi == 0) continue;
+        CGAL::Gmpz p(1);
+        mpz_mul_2exp(p.mpz(), p.mpz(), (unsigned long)(hi < 0 ? -hi : hi));
+        f = (hi > 0 ? CGAL::Gmpq(CGAL::Gmpz(1), p) : CGAL::Gmpq(p)) * f;
+      }
+    return out;
+  }
+}
+
+} // namespace internal
 
 } // namespace Rigid_incidence
 } // namespace CGAL

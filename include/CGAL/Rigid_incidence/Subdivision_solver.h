@@ -77,9 +77,11 @@ public:
   equation, or the box is not a nonempty finite box with one interval per variable.
   */
   template <class NT>
-  Solver_result<IT> solve(const Polynomial_system<NT>& system) const
+  Solver_result<IT> solve(const Polynomial_system<NT>& system_in) const
   {
-    check(system);
+    check(system_in);
+    Polynomial_system<NT> scaled;
+    const Polynomial_system<NT>& system = internal::scaled_to_unit(system_in, scaled);
     internal::Solver_precision_guard<IT> guard(p_.precision);
     Run run(*this, system);
     run.go();
@@ -95,9 +97,11 @@ public:
   \throws Input_error as `solve()`, or if `box` does not have one interval per variable.
   */
   template <class NT>
-  std::optional<Solver_root<IT>> refine(const Polynomial_system<NT>& system, const std::vector<IT>& box) const
+  std::optional<Solver_root<IT>> refine(const Polynomial_system<NT>& system_in, const std::vector<IT>& box) const
   {
-    check(system);
+    check(system_in);
+    Polynomial_system<NT> scaled;
+    const Polynomial_system<NT>& system = internal::scaled_to_unit(system_in, scaled);
     if (box.size() != system.number_of_variables())
       throw Input_error("Subdivision_solver::refine: the box has " + std::to_string(box.size()) + " intervals for " +
                         std::to_string(system.number_of_variables()) + " variables");

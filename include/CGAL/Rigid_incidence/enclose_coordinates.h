@@ -66,13 +66,15 @@ template <class FT> CGAL::Gmpq exact_rational(const FT& x)
 {
   if constexpr (std::is_same<FT, double>::value || std::is_same<FT, float>::value) return CGAL::Gmpq(double(x));
   else if constexpr (std::is_same<FT, CGAL::Gmpq>::value) return x;
+  else if constexpr (std::is_convertible<typename std::decay<decltype(x.exact())>::type, CGAL::Gmpq>::value)
+    return CGAL::Gmpq(x.exact());  // a lazy exact number over Gmpq (Epeck)
   else {
-    // a lazy exact number: print its exact value as p/q and read it back exactly
+    // another exact number type: print its exact value as p/q and read it back exactly
     std::ostringstream os;
     os << x.exact();
     CGAL::Gmpq q;
     std::string why;
-    if (!parse_exact_number(os.str(), q, why)) throw Input_error("cannot convert " + os.str() + " to a rational: " + why);
+    if (!parse_exact_number(os.str(), q, why, 0)) throw Input_error("cannot convert " + os.str() + " to a rational: " + why);
     return q;
   }
 }

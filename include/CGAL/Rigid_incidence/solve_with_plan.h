@@ -273,10 +273,14 @@ not well-constrained (the over- or under-determined part is named), or if an equ
 vanishes identically after substitution.
 */
 template <class IT = CGAL::Interval_nt<false>, class NT>
-Plan_result<IT> solve_with_plan(const Polynomial_system<NT>& system, const Solution_plan& plan,
+Plan_result<IT> solve_with_plan(const Polynomial_system<NT>& system_in, const Solution_plan& plan,
                                 const Subdivision_solver_parameters& parameters = Subdivision_solver_parameters())
 {
-  internal::check_plan(system, plan, "solve_with_plan");
+  internal::check_plan(system_in, plan, "solve_with_plan");
+  // exact scaling first: a block's coefficients become intervals once earlier roots are
+  // substituted, and 1e-400 would then underflow
+  Polynomial_system<NT> scaled;
+  const Polynomial_system<NT>& system = internal::scaled_to_unit(system_in, scaled);
   if (system.box.size() != system.number_of_variables())
     throw Input_error("solve_with_plan: the box has " + std::to_string(system.box.size()) + " intervals for " +
                       std::to_string(system.number_of_variables()) + " variables");

@@ -1270,12 +1270,14 @@ equations or inequalities), if the plan has no curve block or a block that is ne
 curve block (use `trace_curves()` on the whole system).
 */
 template <class IT = CGAL::Interval_nt<false>, class NT>
-Curve_result<IT> trace_curves_with_plan(const Polynomial_system<NT>& system, const Solution_plan& plan,
+Curve_result<IT> trace_curves_with_plan(const Polynomial_system<NT>& system_in, const Solution_plan& plan,
                                         const Curve_tracer_parameters& tracer = Curve_tracer_parameters(),
                                         const Subdivision_solver_parameters& solver = Subdivision_solver_parameters(),
                                         const Plan_trace_parameters& plan_parameters = Plan_trace_parameters())
 {
   const auto start = std::chrono::steady_clock::now();
+  Polynomial_system<NT> scaled;  // exact powers of two against coefficients beyond doubles
+  const Polynomial_system<NT>& system = internal::scaled_to_unit(system_in, scaled);
   internal::check_plan(system, plan, "trace_curves_with_plan");
   std::vector<std::size_t> plan_index;
   const std::vector<Plan_block> blocks = internal::curve_block_first(plan, &plan_index);

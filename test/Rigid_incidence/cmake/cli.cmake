@@ -401,6 +401,14 @@ endif()
 # (Section 4): 4 real solutions, 1 with the two inequalities; the values are the paper's.
 if(TARGET rigid_incidence)
   set(_ri_sys ${RIGID_INCIDENCE_DATA_DIR}/systems)
+  # coefficients beyond the double range (issue 27, item 7): each equation is scaled by an
+  # exact power of two, so 1e400 x - 1e400 is x = 1, not "positive-dimensional"
+  add_test(NAME cli_solve_system_scaled_1e400
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve-system|${CMAKE_CURRENT_LIST_DIR}/../data/system_scaled_1e400.txt"
+                   -DEXPECT_RC=0 "-DEXPECT_STDOUT=1 real root\\(s\\) in the box, 1 certified; complete&&1 certified: x = 1$" -P ${_ri_cli_script})
+  add_test(NAME cli_solve_system_scaled_mixed
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve-system|${CMAKE_CURRENT_LIST_DIR}/../data/system_scaled_mixed.txt"
+                   -DEXPECT_RC=0 "-DEXPECT_STDOUT=2 real root\\(s\\) in the box, 2 certified; complete&&x = -2 y = -6&&x = 2 y = 6" -P ${_ri_cli_script})
   add_test(NAME cli_solve_system_parallelogram
            COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve-system|${_ri_sys}/parallelogram.txt" -DEXPECT_RC=0
                    "-DEXPECT_STDOUT=4 equations in 4 variables, well_constrained; 2 block\\(s\\), the largest solves 2&&block 0: solve equation 1, equation 2 for Ax, Ay\n&&block 1: solve equation 3, equation 4 for Bx, By given Ax, Ay&&4 real root\\(s\\) in the box, 4 certified; complete&&Ax = -1.36[0-9]* Ay = 0.8248[0-9]* Bx = 0.64[0-9]* By = 0.8248"

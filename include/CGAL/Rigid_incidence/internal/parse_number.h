@@ -21,9 +21,26 @@ namespace internal {
 // Exponents beyond this are refused: 10^1e9 would exhaust memory, and no scene needs it.
 constexpr long max_decimal_exponent = 4000;
 
+// Numbers with more significant digits than this (in a decimal's mantissa, or in p or q of a
+// rational) are refused: a coordinate of ten million digits made every later exact operation
+// crawl, and no measured scene needs more than a few dozen.
+constexpr std::size_t max_number_digits = 10000;
+
+// The number of significant digits of an unsigned digit string (leading zeros do not count).
+inline std::size_t significant_digits(const std::string& digits)
+{
+  std::size_t nz = digits.find_first_not_of("0+-");
+  return nz == std::string::npos ? 0 : digits.size() - nz;
+}
+
+inline std::string too_many_digits(std::size_t n, std::size_t max_digits)
+{
+  return std::to_string(n) + " significant digits, more than the " + std::to_string(max_digits) + " a number may have";
+}
+
 // Parses an optionally signed decimal "[-+]digits[.digits][(e|E)[-+]digits]" into q (as in
 // JSON, digits on both sides of a decimal point). On failure returns false and sets why.
-inline bool parse_decimal(const std::string& s, CGAL::Gmpq& q, std::string& why)
+inline bool parse_decimal(const std::string& s, CGAL::Gmpq& q, std::string& why, std::size_t max_digits = max_number_digits)
 {
   std::size_t i = 0, n = s.size();
   bool negative = false;
@@ -52,6 +69,7 @@ inline bool parse_decimal(const std::string& s, CGAL::Gmpq& q, std::string& why)
     if (eneg) exponent = -exponent;
   }
   if (i != n) { why = "unexpected character '" + std::string(1, s[i]) + "'"; return false; }
+  if (max_digits && significant_digits(digits) > max_digits) { why = too_many_digits(significant_digits(digits), max_digits); return false; }
   if (exponent > max_decimal_exponent || exponent < -max_decimal_exponent) {
     why = "exponent out of range (|e| <= " + std::to_string(max_decimal_exponent) + ")"; return false;
   }
@@ -70,8 +88,10 @@ inline bool parse_decimal(const std::string& s, CGAL::Gmpq& q, std::string& why)
 }
 
 // Parses a number given as text: an integer, an exact decimal ("0.9", "-1.25e-3") or a
-// rational "p/q" with integer p and q != 0. On failure returns false and sets why.
-inline bool parse_exact_number(const std::string& text, CGAL::Gmpq& q, std::string& why)
+// rational "p/q" with integer p and q != 0, of at most `max_digits` significant digits (0: no
+// limit). On failure returns false and sets why.
+inline bool parse_exact_number(const std::string& text, CGAL::Gmpq& q, std::string& why,
+                               std::size_t max_digits = max_number_digits)
 {
   // surrounding white space is allowed, white space inside a number is not
   std::size_t first = 0, last = text.size();
@@ -84,7 +104,7 @@ inline bool parse_exact_number(const std::string& text, CGAL::Gmpq& q, std::stri
   if (lower.find("nan") != std::string::npos) { why = "NaN is not a number"; return false; }
   if (lower.find("inf") != std::string::npos) { why = "infinite values are not allowed"; return false; }
   std::size_t slash = s.find('/');
-  if (slash == std::string::npos) return parse_decimal(s, q, why);
+  if (slash == std::string::npos) return parse_decimal(s, q, why, max_digits);
   std::string num = s.substr(0, slash), den = s.substr(slash + 1);
   auto is_int = [](const std::string& t) {
     std::size_t k = (!t.empty() && (t[0] == '-' || t[0] == '+')) ? 1 : 0;
@@ -93,6 +113,8 @@ inline bool parse_exact_number(const std::string& text, CGAL::Gmpq& q, std::stri
     return true;
   };
   if (!is_int(num) || !is_int(den)) { why = "a rational must be p/q with integers p and q"; return false; }
+  for (const std::string* t : {&num, &den})
+    if (max_digits && significant_digits(*t) > max_digits) { why = too_many_digits(significant_digits(*t), max_digits); return false; }
   auto strip_plus = [](const std::string& t) { return (t[0] == '+') ? t.substr(1) : t; };
   CGAL::Gmpz p(strip_plus(num)), d(strip_plus(den));
   if (d == 0) { why = "zero denominator"; return false; }
