@@ -168,12 +168,14 @@ reduced system `r` (one per variable, e.g. a root the solver found).
 Every body of the covering set gets its pose from the tree's maps (composed root to leaf);
 each free point its three variables; a body outside the covering set the best rigid fit of
 its points that the covering set places (three or more, not collinear), which also places
-its own other points. All of it is then expressed in the frame of the scene's frame body
+its own other points; for such a body known by distances, in its placement `variants[b]`
+(default 0: each placement is a configuration of its own when its own points differ, see
+`solve_scene()`). All of it is then expressed in the frame of the scene's frame body
 (`Rigid_body_collection::frame()`, by default the first body of the scene) when that body is
 placed, else in the root's frame (`Configuration::frame` says which).
 */
 template <class Traits, class NT>
-Configuration configuration(const Reduced_system<Traits, NT>& r, const std::vector<double>& x)
+Configuration configuration(const Reduced_system<Traits, NT>& r, const std::vector<double>& x, const std::vector<int>& variants = {})
 {
   const auto& c = r.collection();
   const auto& p = r.parametrization();
@@ -220,7 +222,7 @@ Configuration configuration(const Reduced_system<Traits, NT>& r, const std::vect
         local[i] = {CGAL::to_double(Traits::x(body.coordinates[i])), CGAL::to_double(Traits::y(body.coordinates[i])), CGAL::to_double(Traits::z(body.coordinates[i]))};
     } else {
       CGAL::Protect_FPU_rounding<true> guard;
-      auto e = enclose_coordinates<CGAL::Interval_nt<false>>(c, b, 0);
+      auto e = enclose_coordinates<CGAL::Interval_nt<false>>(c, b, b < variants.size() ? variants[b] : 0);
       if (!e.consistent) continue;
       for (std::size_t i = 0; i < body.points.size(); ++i)
         local[i] = {CGAL::to_double(e.coordinates[i][0]), CGAL::to_double(e.coordinates[i][1]), CGAL::to_double(e.coordinates[i][2])};

@@ -330,12 +330,12 @@ struct Scene_piece
 // (then the piece is not a branch of the scene).
 template <class Traits, class NT>
 bool add_configurations(Scene_piece& q, const std::vector<std::vector<double>>& points, const Reduced_system<Traits, NT>& r,
-                        const Rigid_body_collection<Traits>& original, double threshold)
+                        const Rigid_body_collection<Traits>& original, double threshold, const std::vector<int>& variants = {})
 {
   bool spurious = false;
   const std::size_t n = r.number_of_variables();
   for (const auto& p : points) {
-    q.configurations.push_back(configuration(r, std::vector<double>(p.begin(), p.begin() + long(n))));
+    q.configurations.push_back(configuration(r, std::vector<double>(p.begin(), p.begin() + long(n)), variants));
     Residual_report rep = residuals(original, q.configurations.back());
     if (!verified(rep, threshold, configuration_size(q.configurations.back()))) {
       if (rep.mirrored && rep.complete) spurious = true;
@@ -475,6 +475,30 @@ Scene_solve_result solve_scene(const Rigid_body_collection<Traits>& original, co
                            " placements (maximal_placements): only the first " + std::to_string(r.placements) + " were solved");
     if (!r.inconsistent.empty() && out.no_configuration.empty()) out.no_configuration = r.inconsistent;
   }
+  // bodies outside the covering set known by distances with more than one placement: the
+  // reduced system fixes their covered points (by exact distances), and each placement that
+  // fits them is a configuration of its own (its other points differ), not placement 0 alone
+  std::vector<std::size_t> nc_bodies;
+  std::vector<int> nc_radix;
+  for (std::size_t b : tree.non_covering) {
+    if (c.body(b).all_coordinates()) continue;
+    auto e = internal::cached_placements<CGAL::Interval_nt<false>>(c, b, parameters.maximal_placements);
+    if (!e->complete)
+      out.limits.push_back("body '" + c.body(b).name + "' (outside the covering set) has more than " + std::to_string(e->placements.size()) +
+                           " placements (maximal_placements): only the first " + std::to_string(e->placements.size()) + " were tried");
+    if (!e->singular.empty()) singular_body[b] = e->singular;
+    if (e->placements.size() > 1) { nc_bodies.push_back(b); nc_radix.push_back(int(e->placements.size())); }
+    Scene_placement_report rep;
+    rep.body = c.body(b).name;
+    rep.placements = e->placements.size();
+    rep.complete = e->complete;
+    rep.precision = e->precision;
+    rep.relative_width = e->relative_width;
+    rep.singular = e->singular;
+    rep.inconsistent = e->inconsistent;
+    out.placements.push_back(rep);
+    if (!e->inconsistent.empty() && out.no_configuration.empty()) out.no_configuration = e->inconsistent;
+  }
   if (!out.no_configuration.empty()) return out;
   std::vector<int> placements(c.number_of_bodies(), 0);
   Reduced_system<Traits, NT> first(c, tree, selection);
@@ -607,8 +631,15 @@ Scene_solve_result solve_scene(const Rigid_body_collection<Traits>& original, co
                      (std::size_t(left_out) < sys.labels.size() ? sys.labels[std::size_t(left_out)] : std::string()) +
                      "), which vanishes at every point of the branch: checked numerically, not proved";
           }
-          if (!internal::add_configurations(q, c.points, r, original, parameters.residual_threshold)) { ++st.spurious; continue; }
-          pieces.push_back(std::move(q));
+          std::vector<int> nc(nc_bodies.size(), 0);
+          do {
+            internal::Scene_piece qv = q;
+            std::vector<int> variants = placements;
+            for (std::size_t k = 0; k < nc_bodies.size(); ++k) variants[nc_bodies[k]] = nc[k];
+            qv.piece.placements = variants;
+            if (!internal::add_configurations(qv, c.points, r, original, parameters.residual_threshold, variants)) { ++st.spurious; continue; }
+            pieces.push_back(std::move(qv));
+          } while (internal::next_combination(nc, nc_radix));
         }
       }
       for (const auto& root : res.roots) {
@@ -626,17 +657,32 @@ Scene_solve_result solve_scene(const Rigid_body_collection<Traits>& original, co
             s.singular = true;
             s.singular_reason += (s.singular_reason.empty() ? "" : "; ") + singular_body[b];
           }
-        s.configuration = configuration(r, root.approximation);
-        s.residuals = residuals(original, s.configuration);
-        s.max_residual = s.residuals.max();
-        const double size = internal::configuration_size(s.configuration);
-        if (!internal::verified(s.residuals, parameters.residual_threshold, size)) {
+        // one configuration per placement of the bodies outside the covering set that fits
+        std::vector<Scene_configuration> variants_found;
+        Scene_configuration first_failed;
+        std::vector<int> nc(nc_bodies.size(), 0);
+        do {
+          Scene_configuration v = s;
+          for (std::size_t k = 0; k < nc_bodies.size(); ++k) v.placements[nc_bodies[k]] = nc[k];
+          v.configuration = configuration(r, root.approximation, v.placements);
+          v.residuals = residuals(original, v.configuration);
+          v.max_residual = v.residuals.max();
+          if (internal::verified(v.residuals, parameters.residual_threshold, internal::configuration_size(v.configuration)))
+            variants_found.push_back(std::move(v));
+          else if (first_failed.configuration.points.empty())
+            first_failed = std::move(v);
+        } while (internal::next_combination(nc, nc_radix));
+        if (variants_found.empty()) {
+          s = first_failed;
           if (s.residuals.mirrored && s.residuals.complete) { ++st.spurious; continue; }  // needs a reflection: not a configuration
           // not verified for another reason: say so rather than drop it
           out.unresolved.push_back(unresolved(Box_class::UNKNOWN, "root of the reduced system not verified in the original system (residual " +
                                                   std::to_string(s.max_residual) + ")", s.parameters, 1, s.configuration));
           continue;
         }
+        for (Scene_configuration& v : variants_found) {
+        Scene_configuration& s = v;
+        const double size = internal::configuration_size(s.configuration);
         bool merged = false;
         for (auto& f : found) {
           // one root seen from two charts; never two roots of one system, nor two placements
@@ -651,6 +697,7 @@ Scene_solve_result solve_scene(const Rigid_body_collection<Traits>& original, co
           }
         }
         if (!merged) found.push_back({s, size});
+        }
       }
       add_regions(res.unresolved);
       st.verify_seconds += since(t3);
