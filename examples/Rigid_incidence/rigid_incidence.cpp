@@ -184,6 +184,15 @@ int analyze(const Options& o)
 {
   auto t_start = std::chrono::steady_clock::now();
   RI::Scene scene = RI::read_scene(o.scene);
+  const RI::Scene as_read = scene;
+  Options oo = o;
+  if (o.command == "solve") {  // a scene far from unit size is solved at unit size (exactly scaled)
+    const long k = solve_command::scene_size_exponent(scene);
+    if (k > 20 || k < -20) {
+      scene = solve_command::scaled_scene(scene, -k);
+      oo.solve.scale_exponent = k;
+    }
+  }
   RI::Rigid_body_collection<Traits> input = RI::make_collection<Traits>(scene);
   if (o.command == "family") return family_command::family(scene, input, o.family, o.scene);
   std::vector<std::string> log;
@@ -209,7 +218,7 @@ int analyze(const Options& o)
     std::cerr << "rigid_incidence: note: " << o.scene << ": the distance " << scene.free_distance.a << "-" << scene.free_distance.b
               << " is declared free: solved without it (rigid_incidence family solves the family over its range)\n";
   if (o.command == "solve")
-    return solve_command::solve(scene, input, c, t, wf, dof, o.solve, o.json, o.scene,
+    return solve_command::solve(as_read, input, c, t, wf, dof, oo.solve, o.json, o.scene,
                                 std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count());
   if (o.command == "reduce")
     return reduce_command::reduce(c, t, wf, o.charts, o.form, o.coefficients, o.json, o.scene, 6 * (long(scene.bodies.size()) - 1));

@@ -26,6 +26,7 @@ namespace RI = CGAL::Rigid_incidence;
 
 struct Solve_options
 {
+  long scale_exponent = 0;  // the scene was solved scaled by 2^-scale_exponent (see scaled_scene())
   double tolerance = 1e-12;
   unsigned precision = 53;
   bool fast = false;
@@ -42,6 +43,69 @@ inline double parse_positive(const std::string& opt, const std::string& v)
   if (v.empty() || *end != '\0' || !std::isfinite(x) || !(x > 0))
     throw RI::Input_error(opt + ": '" + v + "' is not a positive number");
   return x;
+}
+
+// The power of two nearest the size of a scene: its largest coordinate or distance (0 for an
+// empty scene).
+inline long scene_size_exponent(const RI::Scene& scene)
+{
+  auto e = [](const CGAL::Gmpq& q) {
+    return long(mpz_sizeinbase(mpq_numref(q.mpq()), 2)) - long(mpz_sizeinbase(mpq_denref(q.mpq()), 2));
+  };
+  bool any = false;
+  long hi = 0;
+  auto see = [&](const CGAL::Gmpq& q, long div) {
+    if (q == 0) return;
+    long x = e(q) / div;
+    hi = any ? (std::max)(hi, x) : x;
+    any = true;
+  };
+  for (const auto& b : scene.bodies)
+    for (const auto& p : b.points) { see(p.x, 1); see(p.y, 1); see(p.z, 1); }
+  for (const auto& d : scene.distances) see(d.squared, 2);
+  return hi;
+}
+
+// The scene with every length multiplied by 2^e, exactly: the same configurations, scaled.
+// The tool solves a scene whose size is beyond 2^+-20 at unit size (the reduced system's
+// coefficients grow as the sixth power of the size and left the range of doubles at 1e55),
+// and scales the configurations back.
+inline RI::Scene scaled_scene(RI::Scene s, long e)
+{
+  CGAL::Gmpz p(1);
+  mpz_mul_2exp(p.mpz(), p.mpz(), (unsigned long)(e < 0 ? -e : e));
+  const CGAL::Gmpq f = e >= 0 ? CGAL::Gmpq(p) : CGAL::Gmpq(CGAL::Gmpz(1), p);
+  for (auto& b : s.bodies)
+    for (auto& q : b.points) { q.x *= f; q.y *= f; q.z *= f; }
+  for (auto& d : s.distances) { d.squared *= f * f; d.length *= f; }
+  s.free_distance.lo *= f;
+  s.free_distance.hi *= f;
+  s.free_distance.nominal_squared *= f * f;
+  return s;
+}
+
+// A configuration of the scaled scene at the scene's own scale (2^k times).
+inline void unscale(RI::Configuration& c, long k)
+{
+  for (auto& p : c.points) for (double& x : p) x = std::ldexp(x, int(k));
+  for (auto& m : c.poses) for (double& x : m.t) x = std::ldexp(x, int(k));
+}
+inline void unscale(RI::Residual_report& r, long k)
+{
+  for (auto& e : r.entries)
+    if (e.kind == RI::Residual::DISTANCE) e.value = std::ldexp(e.value, int(2 * k));
+    else if (e.kind == RI::Residual::INCIDENCE || e.kind == RI::Residual::BODY) e.value = std::ldexp(e.value, int(k));
+  r.max_incidence = std::ldexp(r.max_incidence, int(k));
+  r.max_distance = std::ldexp(r.max_distance, int(2 * k));
+}
+
+// The residual relative to the scene's size: incidences and body fits divided by it, squared
+// distances by its square (0.035 at 10^6 is a residual of 3.5e-14).
+inline double relative_residual(const RI::Scene_configuration& x)
+{
+  const double size = RI::internal::configuration_size(x.configuration);
+  if (!x.residuals.complete || x.residuals.mirrored) return std::numeric_limits<double>::infinity();
+  return (std::max)(x.residuals.max_incidence / size, x.residuals.max_distance / (size * size));
 }
 
 // The pose of every body of the scene file (each has coordinates): the best rigid fit of its
@@ -345,6 +409,19 @@ int solve(const RI::Scene& scene, const RI::Rigid_body_collection<Traits>& input
     throw RI::Input_error("--precision above 53 bits needs MPFI (Debian libmpfi-dev); this build has none");
 #endif
   }
+  if (o.scale_exponent != 0) {
+    const long k = o.scale_exponent;
+    for (auto& x : r.configurations) {
+      unscale(x.configuration, k);
+      unscale(x.residuals, k);
+      x.max_residual = x.residuals.max();
+    }
+    for (auto& u : r.unresolved) unscale(u.at_centre, k);
+    for (auto& c : r.curves) {
+      for (auto& f : c.configurations) unscale(f, k);
+      c.max_residual = std::ldexp(c.max_residual, int(2 * k));
+    }
+  }
   if (!o.near.empty()) {
     auto ref = read_near(o.near);
     std::stable_sort(r.configurations.begin(), r.configurations.end(), [&](const RI::Scene_configuration& a, const RI::Scene_configuration& b) {
@@ -370,6 +447,7 @@ int solve(const RI::Scene& scene, const RI::Rigid_body_collection<Traits>& input
     j["reduced_system"] = {{"variables", vars}, {"equations", r.equations}};
     j["complete"] = r.complete();
     j["certified"] = !r.fast;
+    j["scale_exponent"] = o.scale_exponent;
     j["diagnosis"] = r.diagnosis.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(r.diagnosis);
     j["no_configuration"] = r.no_configuration.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(r.no_configuration);
     j["limits"] = r.limits;
@@ -404,6 +482,7 @@ int solve(const RI::Scene& scene, const RI::Rigid_body_collection<Traits>& input
       sj["bodies"] = bodies;
       sj["points"] = points_json(x.configuration);
       sj["max_residual"] = x.max_residual;
+      sj["max_relative_residual"] = relative_residual(x);
       sols.push_back(sj);
     }
     j["solutions"] = sols;
@@ -457,6 +536,9 @@ int solve(const RI::Scene& scene, const RI::Rigid_body_collection<Traits>& input
   std::cout << std::setprecision(10);
   std::cout << "scene " << scene_file << ": reduced system of " << r.variables.size() << " variables, " << r.equations << " equations; "
             << st.chart_combinations << " chart combination(s) solved" << (r.fast ? " in the FAST, NON-CERTIFIED mode" : "") << "\n";
+  if (o.scale_exponent != 0)
+    std::cout << "the scene's size is about 2^" << o.scale_exponent << ": solved scaled by 2^" << -o.scale_exponent
+              << " (exactly), its configurations given back at the scene's own scale\n";
   if (!r.diagnosis.empty()) std::cout << "diagnosis: " << r.diagnosis << "\n";
   if (!r.no_configuration.empty()) std::cout << "no real configuration: " << r.no_configuration << "\n";
   for (const auto& x : r.placements)
@@ -475,7 +557,8 @@ int solve(const RI::Scene& scene, const RI::Rigid_body_collection<Traits>& input
     std::cout << "\nconfiguration " << ++k << ": " << (x.certified ? "certified" : "NOT certified")
               << (x.on_inequality_boundary ? " (on an inequality's boundary)" : "")
               << (x.singular ? ", SINGULAR (a double configuration: " + x.singular_reason + ")" : "") << ", max residual "
-              << std::setprecision(3) << x.max_residual << std::setprecision(10) << " in the original system\n  parameters:";
+              << std::setprecision(3) << x.max_residual << " (relative to the scene's size " << relative_residual(x) << ")"
+              << std::setprecision(10) << " in the original system\n  parameters:";
     for (std::size_t i = 0; i < x.variables.size(); ++i)
       std::cout << " " << x.variables[i] << " in [" << x.parameters[i].first << ", " << x.parameters[i].second << "]";
     std::cout << "\n  bodies (rotation row-major; translation):\n";

@@ -391,6 +391,14 @@ if(TARGET rigid_incidence)
            COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${_ri_d}/quad_family.json" -DEXPECT_RC=0
                    "-DEXPECT_STDERR=E1-E2 is declared free: solved without it"
                    "-DEXPECT_STDOUT=0 configuration\\(s\\) and 2 curve branch\\(es\\), all certified: complete" -P ${_ri_cli_script})
+  # a scene far from unit size (issue 27, item 6): solved at unit size, exactly scaled by a power
+  # of two, and given back at its own scale; tetra's four configurations at 1e55 and 1e-55
+  foreach(_x 1e55 1e-55)
+    add_test(NAME cli_solve_tetra_x${_x}
+             COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${CMAKE_CURRENT_LIST_DIR}/../data/solve_tetra_x${_x}.json" -DEXPECT_RC=0
+                     "-DEXPECT_STDOUT=solved scaled by 2\\^&&4 configuration\\(s\\), all certified: complete&&P12 = \\(-1e[+-]55, 1e[+-]55, 1e[+-]55\\)&&relative to the scene's size ([0-9.]+e-1[0-9]|0)\\)"
+                     -P ${_ri_cli_script})
+  endforeach()
   add_test(NAME cli_solve_under_constrained
            COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${_ri_d}/bar_end.json|--json" -DEXPECT_RC=0
                    "-DEXPECT_STDOUT=\"complete\": false&&\"diagnosis\": \"under_constrained: " -P ${_ri_cli_script})
