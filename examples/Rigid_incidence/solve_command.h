@@ -417,10 +417,9 @@ int solve(const RI::Scene& scene, const RI::Rigid_body_collection<Traits>& input
       x.max_residual = x.residuals.max();
     }
     for (auto& u : r.unresolved) unscale(u.at_centre, k);
-    for (auto& c : r.curves) {
+    // (a curve's max_residual mixes lengths and squared lengths: it stays at unit size)
+    for (auto& c : r.curves)
       for (auto& f : c.configurations) unscale(f, k);
-      c.max_residual = std::ldexp(c.max_residual, int(2 * k));
-    }
   }
   if (!o.near.empty()) {
     auto ref = read_near(o.near);

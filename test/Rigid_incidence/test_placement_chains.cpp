@@ -281,6 +281,31 @@ static void near_hinge(Rng& g)
   }
 }
 
+// A braced strip of 3 triangles with one more distance p0 - p4 of the wrong length (the five
+// points' distances are all fixed, and only the 5-point Cayley-Menger determinant is off): no
+// side of p4 fits, so the scene has no real configuration, a complete answer (or standardize
+// says so), never an error or an incomplete answer.
+static void excluded_sides(Rng& g)
+{
+  for (const Q& f : {Q(10001, 10000), Q(9999, 10000), Q(11, 10), Q(3, 2)}) {
+    Rigid m0;
+    Scene s = strip(g, 3, false, &m0);
+    s.add_distance_value("p0", "p4", f * s.sq("p0", "p4"));
+    const std::string what = "strip k = 3 with |p0 p4|^2 times " + std::to_string(CGAL::to_double(f));
+    try {
+      RI::Scene_solve_result r = solve(s, "t0");
+      CHECK(r.configurations.empty() && !r.no_configuration.empty() && r.complete(),
+            what << ": " << r.configurations.size() << " configurations, no_configuration '" << r.no_configuration << "', complete " << r.complete());
+      std::cout << what << ": " << r.no_configuration << std::endl;
+    } catch (const RI::No_real_configuration& e) {
+      // standardize decided it from a Cayley-Menger determinant: also right
+      std::cout << what << ": " << e.what() << std::endl;
+    } catch (const std::exception& e) {
+      CHECK(false, what << ": " << e.what());
+    }
+  }
+}
+
 int main()
 {
   CGAL::Gmpfr::set_default_precision(256);
@@ -288,6 +313,7 @@ int main()
   strips(g);
   flat_strips(g);
   near_hinge(g);
+  excluded_sides(g);
   if (failures) { std::cerr << failures << " check(s) failed\n"; return 1; }
   std::cout << "test_placement_chains: all checks passed\n";
   return 0;

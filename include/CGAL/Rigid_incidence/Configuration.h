@@ -232,6 +232,9 @@ Configuration configuration(const Reduced_system<Traits, NT>& r, const std::vect
       if (conf.placed[body.points[i]]) { y.push_back(local[i]); w.push_back(conf.points[body.points[i]]); }
     Rigid_fit f = fit_rigid_motion(y, w);
     if (!f.ok) continue;
+    // placed points on a line leave the body free to turn about it: its other points are not
+    // determined, so they stay unplaced (the configuration is then not verified)
+    if (f.collinear && y.size() < body.points.size()) continue;
     conf.poses[b] = f.motion;
     conf.body_placed[b] = true;
     for (std::size_t i = 0; i < body.points.size(); ++i)

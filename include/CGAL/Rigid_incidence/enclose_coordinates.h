@@ -486,12 +486,13 @@ template <class Traits>
 std::string placement_key(const Rigid_body_collection<Traits>& c, const typename Rigid_body_collection<Traits>::Body& b)
 {
   std::ostringstream os;
-  os << b.name << '\n';
+  auto field = [&os](const std::string& t) { os << t.size() << ':' << t << ';'; };  // length-prefixed: no two keys alike
+  field(b.name);
   for (std::size_t i = 0; i < b.points.size(); ++i) {
-    os << c.label(b.points[i]);
+    field(c.label(b.points[i]));
     if (b.has_coordinates[i])
-      os << ' ' << exact_rational(Traits::x(b.coordinates[i])) << ' ' << exact_rational(Traits::y(b.coordinates[i])) << ' '
-         << exact_rational(Traits::z(b.coordinates[i]));
+      os << '(' << exact_rational(Traits::x(b.coordinates[i])) << ' ' << exact_rational(Traits::y(b.coordinates[i])) << ' '
+         << exact_rational(Traits::z(b.coordinates[i])) << ')';
     os << '\n';
   }
   for (const auto& d : b.squared_distances) os << d.a << '-' << d.b << ' ' << exact_rational(d.squared) << '\n';
@@ -579,6 +580,12 @@ std::shared_ptr<const Placement_enumeration<IT>> cached_placements(const Rigid_b
     }
 #endif
     (void)done;
+    // every side of some point certainly excluded by a further distance or an orientation:
+    // no real placement either (interval exclusion is rigorous)
+    if (out->complete && out->placements.empty())
+      out->inconsistent = "body '" + b.name + "': no placement fits all its distances and orientations (each side of a"
+                          " trilaterated point is excluded by a further distance or an orientation, in intervals at " +
+                          std::to_string(out->precision) + " bits)";
   }
   cache.emplace_back(key, out);
   if (cache.size() > 32) cache.pop_front();

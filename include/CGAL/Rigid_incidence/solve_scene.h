@@ -330,7 +330,8 @@ struct Scene_piece
 // (then the piece is not a branch of the scene).
 template <class Traits, class NT>
 bool add_configurations(Scene_piece& q, const std::vector<std::vector<double>>& points, const Reduced_system<Traits, NT>& r,
-                        const Rigid_body_collection<Traits>& original, double threshold, const std::vector<int>& variants = {})
+                        const Rigid_body_collection<Traits>& original, double threshold, const std::vector<int>& variants = {},
+                        bool* failed_check = nullptr)
 {
   bool spurious = false;
   const std::size_t n = r.number_of_variables();
@@ -340,6 +341,7 @@ bool add_configurations(Scene_piece& q, const std::vector<std::vector<double>>& 
     if (!verified(rep, threshold, configuration_size(q.configurations.back()))) {
       if (rep.mirrored && rep.complete) spurious = true;
       else q.certified = false;
+      if (failed_check) *failed_check = true;
     }
     q.max_residual = (std::max)(q.max_residual, rep.max());
   }
@@ -480,14 +482,24 @@ Scene_solve_result solve_scene(const Rigid_body_collection<Traits>& original, co
   // fits them is a configuration of its own (its other points differ), not placement 0 alone
   std::vector<std::size_t> nc_bodies;
   std::vector<int> nc_radix;
+  std::vector<bool> covered(c.number_of_points(), false);
+  for (std::size_t b : tree.covering_set) for (std::size_t q : c.body(b).points) covered[q] = true;
+  std::size_t nc_product = 1;
   for (std::size_t b : tree.non_covering) {
     if (c.body(b).all_coordinates()) continue;
+    // a body whose points the covering set all places is fixed by the system's equations:
+    // its placements only differ in points of its own
+    const bool own_points = std::any_of(c.body(b).points.begin(), c.body(b).points.end(), [&](std::size_t q) { return !covered[q]; });
     auto e = internal::cached_placements<CGAL::Interval_nt<false>>(c, b, parameters.maximal_placements);
     if (!e->complete)
       out.limits.push_back("body '" + c.body(b).name + "' (outside the covering set) has more than " + std::to_string(e->placements.size()) +
                            " placements (maximal_placements): only the first " + std::to_string(e->placements.size()) + " were tried");
     if (!e->singular.empty()) singular_body[b] = e->singular;
-    if (e->placements.size() > 1) { nc_bodies.push_back(b); nc_radix.push_back(int(e->placements.size())); }
+    if (own_points && e->placements.size() > 1) {
+      nc_bodies.push_back(b);
+      nc_radix.push_back(int(e->placements.size()));
+      nc_product = nc_product > parameters.maximal_placements ? nc_product : nc_product * e->placements.size();
+    }
     Scene_placement_report rep;
     rep.body = c.body(b).name;
     rep.placements = e->placements.size();
@@ -500,6 +512,13 @@ Scene_solve_result solve_scene(const Rigid_body_collection<Traits>& original, co
     if (!e->inconsistent.empty() && out.no_configuration.empty()) out.no_configuration = e->inconsistent;
   }
   if (!out.no_configuration.empty()) return out;
+  if (nc_product > parameters.maximal_placements)
+    out.limits.push_back("the bodies outside the covering set have more than " + std::to_string(parameters.maximal_placements) +
+                         " combinations of placements (maximal_placements): only the first ones were tried for each root");
+  // the combinations of their placements, in order, up to the limit
+  auto next_nc = [&](std::vector<int>& v, std::size_t& tried) {
+    return ++tried < parameters.maximal_placements && internal::next_combination(v, nc_radix);
+  };
   std::vector<int> placements(c.number_of_bodies(), 0);
   Reduced_system<Traits, NT> first(c, tree, selection);
   st.reduce_seconds += since(t0);
@@ -631,15 +650,27 @@ Scene_solve_result solve_scene(const Rigid_body_collection<Traits>& original, co
                      (std::size_t(left_out) < sys.labels.size() ? sys.labels[std::size_t(left_out)] : std::string()) +
                      "), which vanishes at every point of the branch: checked numerically, not proved";
           }
+          // one piece per combination of placements of the bodies outside the covering set that
+          // holds along it; if none does, the first one, not certified (as without them)
           std::vector<int> nc(nc_bodies.size(), 0);
+          std::size_t tried = 0;
+          std::vector<internal::Scene_piece> fitting, failing;
+          bool any_spurious = false;
           do {
             internal::Scene_piece qv = q;
             std::vector<int> variants = placements;
             for (std::size_t k = 0; k < nc_bodies.size(); ++k) variants[nc_bodies[k]] = nc[k];
             qv.piece.placements = variants;
-            if (!internal::add_configurations(qv, c.points, r, original, parameters.residual_threshold, variants)) { ++st.spurious; continue; }
-            pieces.push_back(std::move(qv));
-          } while (internal::next_combination(nc, nc_radix));
+            bool failed = false;
+            if (!internal::add_configurations(qv, c.points, r, original, parameters.residual_threshold, variants, &failed)) {
+              any_spurious = true;
+              continue;
+            }
+            (failed ? failing : fitting).push_back(std::move(qv));
+          } while (next_nc(nc, tried));
+          if (fitting.empty() && failing.empty() && any_spurious) ++st.spurious;
+          if (!fitting.empty()) for (auto& x : fitting) pieces.push_back(std::move(x));
+          else if (!failing.empty()) pieces.push_back(std::move(failing.front()));
         }
       }
       for (const auto& root : res.roots) {
@@ -661,17 +692,24 @@ Scene_solve_result solve_scene(const Rigid_body_collection<Traits>& original, co
         std::vector<Scene_configuration> variants_found;
         Scene_configuration first_failed;
         std::vector<int> nc(nc_bodies.size(), 0);
+        std::size_t tried = 0;
         do {
           Scene_configuration v = s;
           for (std::size_t k = 0; k < nc_bodies.size(); ++k) v.placements[nc_bodies[k]] = nc[k];
           v.configuration = configuration(r, root.approximation, v.placements);
           v.residuals = residuals(original, v.configuration);
           v.max_residual = v.residuals.max();
-          if (internal::verified(v.residuals, parameters.residual_threshold, internal::configuration_size(v.configuration)))
-            variants_found.push_back(std::move(v));
-          else if (first_failed.configuration.points.empty())
+          const double vsize = internal::configuration_size(v.configuration);
+          if (internal::verified(v.residuals, parameters.residual_threshold, vsize)) {
+            // two placements that put every point at the same place are one configuration
+            bool same = false;
+            for (const auto& w : variants_found)
+              same = same || internal::configuration_distance(w.configuration, v.configuration) <= parameters.merge_tolerance * vsize;
+            if (!same) variants_found.push_back(std::move(v));
+          } else if (first_failed.configuration.points.empty()) {
             first_failed = std::move(v);
-        } while (internal::next_combination(nc, nc_radix));
+          }
+        } while (next_nc(nc, tried));
         if (variants_found.empty()) {
           s = first_failed;
           if (s.residuals.mirrored && s.residuals.complete) { ++st.spurious; continue; }  // needs a reflection: not a configuration
