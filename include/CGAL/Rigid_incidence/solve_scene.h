@@ -193,6 +193,19 @@ struct Scene_solve_result
 
 namespace internal {
 
+inline Scene_placement_report placement_report(const std::string& body, const Placement_enumeration<CGAL::Interval_nt<false>>& e)
+{
+  Scene_placement_report r;
+  r.body = body;
+  r.placements = e.placements.size();
+  r.complete = e.complete;
+  r.precision = e.precision;
+  r.relative_width = e.relative_width;
+  r.singular = e.singular;
+  r.inconsistent = e.inconsistent;
+  return r;
+}
+
 // The placements of every covering body known only by distances (counts: 1 for the others).
 template <class Traits>
 std::vector<int> placement_counts(const Rigid_body_collection<Traits>& c, const Incidence_tree& tree, std::size_t maximal = default_maximal_placements,
@@ -205,17 +218,7 @@ std::vector<int> placement_counts(const Rigid_body_collection<Traits>& c, const 
     auto e = cached_placements<CGAL::Interval_nt<false>>(c, b, maximal);
     n[b] = (std::max)(1, int(e->placements.size()));
     if (singular) (*singular)[b] = e->singular;
-    if (reports) {
-      Scene_placement_report r;
-      r.body = c.body(b).name;
-      r.placements = e->placements.size();
-      r.complete = e->complete;
-      r.precision = e->precision;
-      r.relative_width = e->relative_width;
-      r.singular = e->singular;
-      r.inconsistent = e->inconsistent;
-      reports->push_back(r);
-    }
+    if (reports) reports->push_back(placement_report(c.body(b).name, *e));
   }
   return n;
 }
@@ -500,15 +503,7 @@ Scene_solve_result solve_scene(const Rigid_body_collection<Traits>& original, co
       nc_radix.push_back(int(e->placements.size()));
       nc_product = nc_product > parameters.maximal_placements ? nc_product : nc_product * e->placements.size();
     }
-    Scene_placement_report rep;
-    rep.body = c.body(b).name;
-    rep.placements = e->placements.size();
-    rep.complete = e->complete;
-    rep.precision = e->precision;
-    rep.relative_width = e->relative_width;
-    rep.singular = e->singular;
-    rep.inconsistent = e->inconsistent;
-    out.placements.push_back(rep);
+    out.placements.push_back(internal::placement_report(c.body(b).name, *e));
     if (!e->inconsistent.empty() && out.no_configuration.empty()) out.no_configuration = e->inconsistent;
   }
   if (!out.no_configuration.empty()) return out;
