@@ -49,9 +49,7 @@ inline double parse_positive(const std::string& opt, const std::string& v)
 // empty scene).
 inline long scene_size_exponent(const RI::Scene& scene)
 {
-  auto e = [](const CGAL::Gmpq& q) {
-    return long(mpz_sizeinbase(mpq_numref(q.mpq()), 2)) - long(mpz_sizeinbase(mpq_denref(q.mpq()), 2));
-  };
+  auto e = [](const CGAL::Gmpq& q) { return RI::internal::binary_exponent(q); };
   bool any = false;
   long hi = 0;
   auto see = [&](const CGAL::Gmpq& q, long div) {

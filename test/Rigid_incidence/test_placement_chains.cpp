@@ -255,7 +255,7 @@ static void flat_strips(Rng& g)
 // the line H1 H2, held by the distance Q - A: two configurations, about 1.4 `off` apart.
 static void near_hinge(Rng& g)
 {
-  for (const Q& off : {Q(1, 10000000), Q(1, 10000000000LL)}) {
+  for (const Q& off : {Q(1, 10000000), Q(1, 100000) * Q(1, 100000)}) {
     Scene s;
     s.add_point("H1", QP{Q(0), Q(0), Q(0)});
     s.add_point("H2", QP{Q(2), Q(0), Q(0)});

@@ -100,17 +100,6 @@ template <class IT, class FT> IT enclose(const FT& x)
 template <class IT, bool = is_interval_nt<IT>::value> struct Rounding_guard { typename IT::Protector p; };
 template <class IT> struct Rounding_guard<IT, false> {};
 
-// Nonnegative part of an enclosure of a square (round-off can make its lower end negative).
-template <class IT> IT nonnegative(const IT& x)
-{
-  typedef CGAL::Interval_traits<IT> IT_traits;
-  typename IT_traits::Lower lower;
-  typename IT_traits::Upper upper;
-  if (upper(x) < 0) return IT(0);
-  if (lower(x) < 0) return typename IT_traits::Construct()(typename IT_traits::Bound(0), upper(x));
-  return x;
-}
-
 } // namespace internal
 
 namespace internal {
@@ -468,10 +457,8 @@ std::vector<Body_enclosure<IT>> convert_enclosures(std::vector<Body_enclosure<W>
       f.singular = e.singular;
       for (const auto& x : e.coordinates) {
         std::array<IT, 3> y;
-        for (std::size_t k = 0; k < 3; ++k) {
-          if constexpr (is_interval_nt<IT>::value) y[k] = IT(CGAL::to_interval(x[k]));
-          else y[k] = IT(CGAL::to_interval(x[k]));  // a double interval into a wider type: exact
-        }
+        // Gmpfi to double intervals rounds outward; double intervals into Gmpfi are exact
+        for (std::size_t k = 0; k < 3; ++k) y[k] = IT(CGAL::to_interval(x[k]));
         f.coordinates.push_back(y);
       }
       out.push_back(std::move(f));
