@@ -316,6 +316,7 @@ int analyze(const Options& o)
     }
     if (placements[i] == 0) {
       auto e = RI::enumerate_placements<CGAL::Interval_nt<false>>(c, i);
+      if (!e.undecided.empty()) { placement_notes[i] = e.undecided; continue; }
       throw RI::No_real_configuration(o.scene + ": " + (e.inconsistent.empty() ? "body '" + c.body(i).name +
                                                                                        "': its distances admit no real placement"
                                                                                  : e.inconsistent));

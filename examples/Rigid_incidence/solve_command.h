@@ -453,7 +453,8 @@ int solve(const RI::Scene& scene, const RI::Rigid_body_collection<Traits>& input
       pl.push_back({{"body", x.body}, {"placements", x.placements}, {"complete", x.complete}, {"precision_bits", x.precision},
                     {"relative_width", x.relative_width},
                     {"singular", x.singular.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(x.singular)},
-                    {"inconsistent", x.inconsistent.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(x.inconsistent)}});
+                    {"inconsistent", x.inconsistent.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(x.inconsistent)},
+                    {"undecided", x.undecided.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(x.undecided)}});
     j["placements"] = pl;
     nlohmann::ordered_json sols = nlohmann::ordered_json::array();
     for (const auto& x : r.configurations) {
@@ -525,6 +526,7 @@ int solve(const RI::Scene& scene, const RI::Rigid_body_collection<Traits>& input
     j["stats"] = {{"chart_combinations", st.chart_combinations}, {"excluded_at_once", st.excluded_at_once},
                   {"boxes", st.boxes}, {"krawczyk_tests", st.krawczyk_tests}, {"roots", st.roots},
                   {"duplicates_merged", st.duplicates}, {"spurious_rejected", st.spurious}, {"curve_boxes", st.curve_boxes},
+                  {"placements_excluded", st.placements_excluded},
                   {"seconds", {{"analysis", analysis_seconds}, {"reduce", st.reduce_seconds}, {"solve", st.solve_seconds},
                                {"verify", st.verify_seconds}}}};
     std::cout << j.dump(2) << "\n";
@@ -598,7 +600,9 @@ int solve(const RI::Scene& scene, const RI::Rigid_body_collection<Traits>& input
   }
   std::cout << "\nstatistics: " << st.boxes << " boxes, " << st.krawczyk_tests << " Krawczyk tests, " << st.roots << " roots ("
             << st.duplicates << " found twice, " << st.spurious << " rejected by the original system), " << st.excluded_at_once << " of "
-            << st.chart_combinations << " chart combinations excluded at once; seconds: analysis " << analysis_seconds << ", reduce "
+            << st.chart_combinations << " chart combinations excluded at once"
+            << (st.placements_excluded ? ", " + std::to_string(st.placements_excluded) + " combinations of placements excluded (shared points at distances that differ)" : std::string())
+            << "; seconds: analysis " << analysis_seconds << ", reduce "
             << st.reduce_seconds << ", solve " << st.solve_seconds << ", verify " << st.verify_seconds << "\n";
   return 0;
 }

@@ -97,6 +97,14 @@ public:
     /// one; 0 when coordinates and distances are combined and the placements must be
     /// enumerated (see `enclose_all_placements()`).
     int mirror_variants = 1;
+    /// Rigid parts: bodies of their own (each in its own frame, with its own coordinates,
+    /// distances and parts) that hold some of this body's points in place where the distances
+    /// between them are not known exactly: `standardize()` keeps a body here when it merges
+    /// bodies that share three points whose distances run through placements from distances,
+    /// or adds an implied body with such a pair. A placement of this body superposes one
+    /// placement of each part on its points (see `enumerate_placements()`). A part may hold
+    /// points that are not points of this body; only the shared ones count.
+    std::vector<Body> parts;
 
     /// Local index of global point `p`, or `npos`.
     std::size_t local(std::size_t p) const
@@ -106,9 +114,10 @@ public:
     }
     /// `true` if global point `p` is a point of the body.
     bool contains(std::size_t p) const { return local(p) != npos; }
-    /// `true` if every point of the body has exact local coordinates (the body is not known by distances only).
+    /// `true` if every point of the body has exact local coordinates and no part is left to
+    /// check (the body is not known by distances only).
     bool all_coordinates() const
-    { return std::all_of(has_coordinates.begin(), has_coordinates.end(), [](bool b) { return b; }); }
+    { return parts.empty() && std::all_of(has_coordinates.begin(), has_coordinates.end(), [](bool b) { return b; }); }
     /// The squared distance between the local points `i` and `j`, when the body knows it exactly.
     std::optional<FT> squared(std::size_t i, std::size_t j) const
     {

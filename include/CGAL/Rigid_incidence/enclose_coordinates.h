@@ -47,6 +47,11 @@ struct Body_enclosure
   /// a double placement: a point lies exactly on the plane of the three points it is placed
   /// from, so its two sides coincide (see `Placement_enumeration::singular`)
   bool singular = false;
+  /// the placement could not be decided at the final precision: a point's height over the
+  /// plane of its references (placed through a rigid part or from inexact references) is
+  /// not separated from 0, and the enclosure covers both sides (see
+  /// `Placement_enumeration::undecided`)
+  bool undecided = false;
 };
 
 namespace internal {
@@ -104,35 +109,54 @@ template <class IT> struct Rounding_guard<IT, false> {};
 
 namespace internal {
 
-// One trilateration of a body's placement, in exact rationals: point p is
+// One step of a body's placement. EXACT: a trilateration in exact rationals: point p is
 //   X_p = X_A + a (X_B - X_A) + b (X_C - X_A) + side sqrt(s) (X_B - X_A) x (X_C - X_A),
 // where a, b and s come from the six squared distances among p, A, B, C alone (s = h^2 / G,
 // h the height of p over the plane ABC, G = |(B - A) x (C - A)|^2 the Gram determinant).
 // So the side choices and the rounding of earlier points never enter them, and whether p
 // has two sides, one (h = 0: a double placement) or none is decided exactly.
+// INTERVAL: a trilateration from three placed points whose own distances are not all known
+// exactly (they run through placements): the same formulas in intervals, from the placed
+// coordinates; the sign of s is decided per placement in intervals.
+// PART: a rigid part of the body superposed on its placed points (each of its placements in
+// turn), which places its other points; with nothing left to place, a check.
+enum class Placement_step_kind { EXACT, INTERVAL, PART };
+
 struct Placement_step
 {
+  Placement_step_kind kind = Placement_step_kind::EXACT;
   std::size_t p = 0, A = 0, B = 0, C = 0;
   CGAL::Gmpq a, b, s;
   CGAL::Sign sign = CGAL::POSITIVE;  // of s
+  std::vector<std::array<std::size_t, 3>> references;  // INTERVAL: candidate reference triples
+  std::size_t part = 0;                                // PART: which part
+  std::vector<std::size_t> places;                     // PART: the points it places
 };
 
 // What a body's distances say about its placements, exactly, before a side is chosen.
 struct Placement_plan
 {
+  static constexpr std::size_t none = std::size_t(-1);
+  std::string name;
   std::size_t m = 0;
   std::vector<std::string> labels;
   std::vector<std::vector<std::optional<CGAL::Gmpq>>> known;   // squared distances, local indices
   std::vector<std::optional<std::array<CGAL::Gmpq, 3>>> given; // coordinates the body gives
   bool in_given_frame = false;
+  bool map_to_given = false;  // placed in a canonical frame, then moved onto the given coordinates
   std::array<std::size_t, 3> base{{0, 0, 0}};  // canonical frame: base[0] at 0, base[1] on +x, base[2] in xy, y > 0
   CGAL::Gmpq d01, c1, y2;                      // |base0 base1|^2; base2 = (c1 sqrt(d01), sqrt(y2), 0)
+  std::size_t start_part = none;               // else: the body starts from this part's placements, in its frame
+  std::size_t start_third = none;              // a start part with two points: the third point, in the xy plane
   std::vector<Placement_step> steps;           // in placement order
   std::vector<std::array<std::size_t, 4>> orient_idx;
   std::vector<CGAL::Sign> orient_sign;
+  std::vector<Placement_plan> parts;              // the plans of the body's rigid parts
+  std::vector<std::vector<std::size_t>> part_map; // per part: its local index -> the body's (none: not a point of the body)
   std::string inconsistent;  // nonempty: the distances admit no placement, and why
   std::string singular;      // nonempty: every placement is a double one, and where
   double scale = 1;          // the body's size: its largest distance or coordinate
+  double slack = 0;          // rounded input (a kernel of doubles): a relative mismatch it tolerates
 };
 
 template <class Traits>
@@ -141,6 +165,7 @@ class Placement_planner
   typedef Rigid_body_collection<Traits> Collection;
   typedef typename Collection::Body Body;
   typedef CGAL::Gmpq Q;
+  static constexpr std::size_t none = Placement_plan::none;
 
 public:
   Placement_planner(const Collection& c, const Body& b) : c_(c), b_(b) {}
@@ -149,6 +174,7 @@ public:
   {
     Placement_plan& P = plan_;
     const std::size_t m = b_.points.size();
+    P.name = b_.name;
     P.m = m;
     for (std::size_t i = 0; i < m; ++i) P.labels.push_back(c_.label(b_.points[i]));
     P.known.assign(m, std::vector<std::optional<Q>>(m));
@@ -172,8 +198,19 @@ public:
       }
     P.scale = (std::max)(std::sqrt(scale2), scale1);
     if (!(P.scale > 0) || !std::isfinite(P.scale)) P.scale = 1;
+    if (!Traits::has_exact_ft) P.slack = 1e-9;  // as the side decisions below and standardize
     for (const auto& o : b_.orientations) { P.orient_idx.push_back({o.a, o.b, o.c, o.d}); P.orient_sign.push_back(o.sign); }
-    P.in_given_frame = given >= 3 && reachable(placed);
+    for (const Body& part : b_.parts) {
+      P.parts.push_back(Placement_planner<Traits>(c_, part).run());
+      std::vector<std::size_t> map(part.points.size(), none);
+      for (std::size_t k = 0; k < part.points.size(); ++k) map[k] = b_.local(part.points[k]);
+      P.part_map.push_back(map);
+      const Placement_plan& pp = P.parts.back();
+      if (!pp.inconsistent.empty() && P.inconsistent.empty())
+        P.inconsistent = "body '" + b_.name + "', through its part '" + part.name + "': " + pp.inconsistent;
+    }
+    std::vector<bool> used(P.parts.size(), false);
+    if (given >= 3) { std::vector<bool> trial_used = used; P.in_given_frame = order(placed, trial_used, nullptr); }
     if (!P.in_given_frame) {
       // canonical frame; the given coordinates keep their handedness through an orientation
       extra_orientations();
@@ -184,28 +221,70 @@ public:
           if (proper_triangle(i, j, k)) {
             std::vector<bool> trial(m, false);
             trial[i] = trial[j] = trial[k] = true;
-            if (reachable(trial)) base = std::array<std::size_t, 3>{i, j, k};
+            std::vector<bool> trial_used = used;
+            if (order(trial, trial_used, nullptr)) base = std::array<std::size_t, 3>{i, j, k};
           }
-      if (!base)
-        throw Input_error("body '" + b_.name + "': its points cannot be placed one after the other from three placed"
-                          " points at known distances (a placement this version does not support)");
-      P.base = *base;
-      const auto [i, j, k] = *base;
-      P.d01 = *P.known[i][j];
-      P.c1 = (P.d01 + *P.known[i][k] - *P.known[j][k]) / (Q(2) * P.d01);
-      P.y2 = *P.known[i][k] - P.c1 * P.c1 * P.d01;  // > 0: a proper triangle
-      placed[i] = placed[j] = placed[k] = true;
+      if (base) {
+        P.base = *base;
+        const auto [i, j, k] = *base;
+        P.d01 = *P.known[i][j];
+        P.c1 = (P.d01 + *P.known[i][k] - *P.known[j][k]) / (Q(2) * P.d01);
+        P.y2 = *P.known[i][k] - P.c1 * P.c1 * P.d01;  // > 0: a proper triangle
+        placed[i] = placed[j] = placed[k] = true;
+      } else {
+        // no triangle of known distances places the body: start from a rigid part instead
+        for (std::size_t j = 0; j < P.parts.size() && P.start_part == none; ++j) {
+          std::vector<bool> trial(m, false);
+          std::size_t n = 0;
+          for (std::size_t q : P.part_map[j]) if (q != none) { trial[q] = true; ++n; }
+          std::vector<bool> trial_used(P.parts.size(), false);
+          trial_used[j] = true;
+          if (n >= 3 && order(trial, trial_used, nullptr)) P.start_part = j;
+        }
+        // a part with two points fixes their distance (one value per placement): a segment on
+        // the x axis, and a third point at known distances from both in the xy plane
+        for (std::size_t j = 0; j < P.parts.size() && P.start_part == none; ++j) {
+          std::vector<std::size_t> two;
+          for (std::size_t q : P.part_map[j]) if (q != none) two.push_back(q);
+          if (two.size() != 2) continue;
+          for (std::size_t c = 0; c < m && P.start_part == none; ++c) {
+            if (c == two[0] || c == two[1] || !P.known[c][two[0]] || !P.known[c][two[1]]) continue;
+            std::vector<bool> trial(m, false);
+            trial[two[0]] = trial[two[1]] = trial[c] = true;
+            std::vector<bool> trial_used(P.parts.size(), false);
+            trial_used[j] = true;
+            if (order(trial, trial_used, nullptr)) { P.start_part = j; P.start_third = c; }
+          }
+        }
+        if (P.start_part == none)
+          throw Input_error("body '" + b_.name + "': its points cannot be placed one after the other from three placed"
+                            " points at known distances or from its rigid parts (a placement this version does not support)");
+        for (std::size_t q : P.part_map[P.start_part]) if (q != none) placed[q] = true;
+        if (P.start_third != none) placed[P.start_third] = true;
+        used[P.start_part] = true;
+      }
     }
-    // the order: the first point (by index) with a reference triangle, again and again
-    while (true) {
-      std::size_t next = m;
-      std::optional<std::array<std::size_t, 3>> tri;
-      for (std::size_t p = 0; p < m && next == m; ++p)
-        if (!placed[p]) { tri = reference_triangle(p, placed); if (tri) next = p; }
-      if (next == m) break;
-      P.steps.push_back(step(next, *tri));
-      placed[next] = true;
+    if (!P.in_given_frame && given >= 3) {
+      // the given coordinates cannot start the placement, but the result is still in their frame
+      std::vector<std::size_t> g;
+      for (std::size_t i = 0; i < m; ++i) if (P.given[i]) g.push_back(i);
+      for (std::size_t a = 2; a < g.size() && !P.map_to_given; ++a) {
+        const auto &X = *P.given[g[0]], &Y = *P.given[g[1]], &Z = *P.given[g[a]];
+        Q u[3], v[3];
+        for (int k = 0; k < 3; ++k) { u[k] = Y[k] - X[k]; v[k] = Z[k] - X[k]; }
+        P.map_to_given = CGAL::sign(u[1] * v[2] - u[2] * v[1]) != CGAL::ZERO || CGAL::sign(u[2] * v[0] - u[0] * v[2]) != CGAL::ZERO ||
+                         CGAL::sign(u[0] * v[1] - u[1] * v[0]) != CGAL::ZERO;
+      }
     }
+    order(placed, used, &P.steps);
+    // the parts that placed nothing are checks: each must fit the placed points
+    for (std::size_t j = 0; j < P.parts.size(); ++j)
+      if (!used[j]) {
+        Placement_step s;
+        s.kind = Placement_step_kind::PART;
+        s.part = j;
+        P.steps.push_back(s);
+      }
     if (singular_points_ > 1) P.singular += "; so are " + std::to_string(singular_points_ - 1) + " more of its points";
     return P;
   }
@@ -222,14 +301,58 @@ private:
     return K[i][j] && K[i][k] && K[j][k] && triangle_sign<Traits::has_exact_ft>(*K[i][j], *K[i][k], *K[j][k]) == CGAL::POSITIVE;
   }
 
-  // Can every point be placed by repeated trilateration from the `placed` ones?
-  bool reachable(std::vector<bool> placed) const
+  // Places the points one after the other from `placed`: an exact trilateration where one
+  // exists (the first point by index), else a part with three placed points, else a
+  // trilateration in intervals. Appends the steps to `steps` if given (and then marks the
+  // parts used in `used`); true if every point is placed.
+  bool order(std::vector<bool> placed, std::vector<bool>& used, std::vector<Placement_step>* steps)
   {
-    bool progress = true;
-    while (progress) {
-      progress = false;
-      for (std::size_t p = 0; p < plan_.m; ++p)
-        if (!placed[p] && reference_triangle(p, placed)) { placed[p] = true; progress = true; }
+    const std::size_t m = plan_.m;
+    while (true) {
+      bool progress = false;
+      for (std::size_t p = 0; p < m && !progress; ++p)
+        if (!placed[p])
+          if (auto tri = reference_triangle(p, placed)) {
+            if (steps) steps->push_back(step(p, *tri));
+            placed[p] = progress = true;
+          }
+      for (std::size_t j = 0; j < plan_.parts.size() && !progress; ++j) {
+        if (used[j]) continue;
+        std::size_t on = 0;
+        std::vector<std::size_t> places;
+        for (std::size_t q : plan_.part_map[j]) {
+          if (q == none) continue;
+          if (placed[q]) ++on; else places.push_back(q);
+        }
+        if (on < 3 || places.empty()) continue;
+        if (steps) {
+          Placement_step s;
+          s.kind = Placement_step_kind::PART;
+          s.part = j;
+          s.places = places;
+          steps->push_back(s);
+        }
+        for (std::size_t q : places) placed[q] = true;
+        used[j] = progress = true;
+      }
+      for (std::size_t p = 0; p < m && !progress; ++p) {
+        if (placed[p]) continue;
+        std::vector<std::size_t> refs;
+        for (std::size_t q = 0; q < m; ++q) if (placed[q] && plan_.known[p][q]) refs.push_back(q);
+        if (refs.size() < 3) continue;
+        if (steps) {
+          Placement_step s;
+          s.kind = Placement_step_kind::INTERVAL;
+          s.p = p;
+          for (std::size_t a = 0; a < refs.size() && s.references.size() < 20; ++a)
+            for (std::size_t b = a + 1; b < refs.size() && s.references.size() < 20; ++b)
+              for (std::size_t c = b + 1; c < refs.size() && s.references.size() < 20; ++c)
+                s.references.push_back({refs[a], refs[b], refs[c]});
+          steps->push_back(s);
+        }
+        placed[p] = progress = true;
+      }
+      if (!progress) break;
     }
     return std::all_of(placed.begin(), placed.end(), [](bool x) { return x; });
   }
@@ -302,11 +425,37 @@ private:
   }
 };
 
+// The rigid motion taking three points (y0, y1, y2, not on a line) to (x0, x1, x2), in
+// intervals: a point's coordinates in the basis (u, v, u x v) of the first triangle, put on
+// the same basis at the second. Exact values of congruent triangles give a rotation.
+template <class W>
+struct Interval_rigid_map
+{
+  typedef std::array<W, 3> P;
+  P y0, u2, v2, w2, x0, u1, v1, w1;
+  W uu, vv, uv, G;
+  Interval_rigid_map(const P& a, const P& b, const P& c, const P& x, const P& y, const P& z)
+    : y0(a), u2(sub(b, a)), v2(sub(c, a)), w2(cross(u2, v2)), x0(x), u1(sub(y, x)), v1(sub(z, x)), w1(cross(u1, v1)),
+      uu(dot(u2, u2)), vv(dot(v2, v2)), uv(dot(u2, v2)), G(dot(w2, w2)) {}
+  P operator()(const P& q) const
+  {
+    const P d = sub(q, y0);
+    const W du = dot(d, u2), dv = dot(d, v2);
+    const W cu = (vv * du - uv * dv) / G, cv = (uu * dv - uv * du) / G, cw = dot(d, w2) / G;
+    P r;
+    for (std::size_t c = 0; c < 3; ++c) r[c] = x0[c] + cu * u1[c] + cv * v1[c] + cw * w1[c];
+    return r;
+  }
+};
+
 // The placements of a plan in the interval type W (the caller sets W's rounding or precision).
 template <class W>
 class Placement_enumerator
 {
   typedef std::array<W, 3> P;
+  typedef typename CGAL::Interval_traits<W>::Lower Lower;
+  typedef typename CGAL::Interval_traits<W>::Upper Upper;
+  static constexpr std::size_t none = Placement_plan::none;
 
 public:
   Placement_enumerator(const Placement_plan& plan, std::size_t max_placements) : plan_(plan), max_(max_placements) {}
@@ -314,13 +463,20 @@ public:
   std::vector<Body_enclosure<W>> run()
   {
     const Placement_plan& Pl = plan_;
+    for (std::size_t j = 0; j < Pl.parts.size(); ++j) {
+      Placement_enumerator<W> e(Pl.parts[j], max_);
+      part_placements_.push_back(e.run());
+      if (e.truncated()) truncated_ = true;
+      if (!e.undecided().empty()) note_undecided(false, "its part '" + Pl.parts[j].name + "': " + e.undecided());
+    }
     for (const auto& s : Pl.steps) {
+      if (s.kind != Placement_step_kind::EXACT) { a_.push_back(W(0)); b_.push_back(W(0)); t_.push_back(W(0)); continue; }
       a_.push_back(from_rational(s.a));
       b_.push_back(from_rational(s.b));
       t_.push_back(s.sign == CGAL::POSITIVE ? W(CGAL::sqrt(from_rational(s.s))) : W(0));
     }
-    // per step: the distances to check (placed points other than the references) and the
-    // orientations whose last point it places
+    // per step: the distances to check (pairs of placed points, one of them new, not the
+    // exact step's references) and the orientations whose last point it places
     std::vector<bool> placed(Pl.m, false);
     x_.assign(Pl.m, P{W(0), W(0), W(0)});
     if (Pl.in_given_frame) {
@@ -329,41 +485,111 @@ public:
           for (int k = 0; k < 3; ++k) x_[i][std::size_t(k)] = from_rational((*Pl.given[i])[std::size_t(k)]);
           placed[i] = true;
         }
-    } else {
+    } else if (Pl.start_part == none) {
       const W l = CGAL::sqrt(from_rational(Pl.d01));
       x_[Pl.base[1]] = P{l, W(0), W(0)};
       x_[Pl.base[2]] = P{from_rational(Pl.c1) * l, W(CGAL::sqrt(from_rational(Pl.y2))), W(0)};
       for (std::size_t i : Pl.base) placed[i] = true;
+    } else {
+      for (std::size_t q : Pl.part_map[Pl.start_part]) if (q != none) placed[q] = true;
+      if (Pl.start_third != none) placed[Pl.start_third] = true;
     }
+    for (std::size_t p = 0; p < Pl.m; ++p)
+      for (std::size_t q = p + 1; q < Pl.m; ++q)
+        if (placed[p] && placed[q] && Pl.known[p][q] && Pl.start_part != none) start_checks_.push_back({p, q});
     for (std::size_t o = 0; o < Pl.orient_idx.size(); ++o)
       if (all_placed(Pl.orient_idx[o], placed)) initial_orientations_.push_back(o);
     for (const auto& s : Pl.steps) {
-      std::vector<std::size_t> checks;
-      for (std::size_t q = 0; q < Pl.m; ++q)
-        if (placed[q] && q != s.A && q != s.B && q != s.C && Pl.known[s.p][q]) checks.push_back(q);
+      std::vector<std::size_t> fresh;
+      if (s.kind == Placement_step_kind::PART) fresh = s.places; else fresh.push_back(s.p);
+      std::vector<std::array<std::size_t, 2>> checks;
+      for (std::size_t p : fresh) {
+        for (std::size_t q = 0; q < Pl.m; ++q)
+          if (placed[q] && Pl.known[p][q] &&
+              !(s.kind == Placement_step_kind::EXACT && (q == s.A || q == s.B || q == s.C)))
+            checks.push_back({p, q});
+        placed[p] = true;
+      }
       checks_.push_back(checks);
-      placed[s.p] = true;
       std::vector<std::size_t> orient;
       for (std::size_t o = 0; o < Pl.orient_idx.size(); ++o) {
         const auto& q = Pl.orient_idx[o];
-        if (std::find(q.begin(), q.end(), s.p) != q.end() && all_placed(q, placed)) orient.push_back(o);
+        bool touches = false;
+        for (std::size_t p : fresh) if (std::find(q.begin(), q.end(), p) != q.end()) touches = true;
+        if (touches && all_placed(q, placed)) orient.push_back(o);
       }
       orientations_.push_back(orient);
     }
-    for (std::size_t o : initial_orientations_) if (violates(o)) return out_;
-    place(0);
+    if (Pl.start_part == none) {
+      for (std::size_t o : initial_orientations_) if (violates(o)) return out_;
+      place(0, false, false);
+    } else if (Pl.start_third != none) {
+      // a segment from each placement of the start part (each length once), then the third point
+      const auto& map = Pl.part_map[Pl.start_part];
+      std::vector<std::size_t> two;
+      for (std::size_t k = 0; k < map.size(); ++k) if (map[k] != none) two.push_back(k);
+      const std::size_t A = map[two[0]], B = map[two[1]], C = Pl.start_third;
+      std::vector<W> lengths;
+      for (const auto& e : part_placements_[Pl.start_part]) {
+        const P d = sub(e.coordinates[two[0]], e.coordinates[two[1]]);
+        const W L2 = dot(d, d);
+        bool again = false;
+        for (const W& l : lengths) if (internal::overlap(l, L2)) again = true;
+        if (again) continue;
+        lengths.push_back(L2);
+        const W L = CGAL::sqrt(L2), rA = from_rational(*Pl.known[C][A]), rB = from_rational(*Pl.known[C][B]);
+        const W x = (L2 + rA - rB) / (W(2) * L), y2 = rA - x * x;
+        if (negative(y2)) continue;
+        bool here_undecided = false;
+        W y = W(0);
+        if (positive(y2)) y = CGAL::sqrt(y2);
+        else {
+          y = typename CGAL::Interval_traits<W>::Hull()(W(0), CGAL::sqrt(W(Upper()(y2))));
+          here_undecided = true;
+          note_undecided(false, "the height of '" + Pl.labels[C] + "' over the line of '" + Pl.labels[A] + "' and '" + Pl.labels[B] +
+                                    "' is not separated from 0");
+        }
+        x_[A] = P{W(0), W(0), W(0)};
+        x_[B] = P{L, W(0), W(0)};
+        x_[C] = P{x, y, W(0)};
+        if (!fits(start_checks_)) continue;
+        bool ok = true;
+        for (std::size_t o : initial_orientations_) if (violates(o)) { ok = false; break; }
+        if (ok) place(0, e.singular, e.undecided || here_undecided);
+      }
+    } else {
+      // the start part's placements, each in its own frame
+      const auto& map = Pl.part_map[Pl.start_part];
+      for (const auto& e : part_placements_[Pl.start_part]) {
+        for (std::size_t k = 0; k < map.size(); ++k) if (map[k] != none) x_[map[k]] = e.coordinates[k];
+        if (!fits(start_checks_)) continue;
+        bool ok = true;
+        for (std::size_t o : initial_orientations_) if (violates(o)) { ok = false; break; }
+        if (ok) place(0, e.singular, e.undecided);
+      }
+    }
     return out_;
   }
 
   bool truncated() const { return truncated_; }
+  /// nonempty: some placements could not be decided in this precision, and which
+  std::string undecided() const
+  {
+    return undecided_count_ > 1 ? undecided_ + "; and " + std::to_string(undecided_count_ - 1) + " more such choices" : undecided_;
+  }
 
 private:
   const Placement_plan& plan_;
   std::size_t max_;
   bool truncated_ = false;
+  std::string undecided_;
+  std::size_t undecided_count_ = 0;
   std::vector<W> a_, b_, t_;
-  std::vector<std::vector<std::size_t>> checks_, orientations_;
+  std::vector<std::vector<std::array<std::size_t, 2>>> checks_;
+  std::vector<std::array<std::size_t, 2>> start_checks_;
+  std::vector<std::vector<std::size_t>> orientations_;
   std::vector<std::size_t> initial_orientations_;
+  std::vector<std::vector<Body_enclosure<W>>> part_placements_;
   std::vector<P> x_;
   std::vector<Body_enclosure<W>> out_;
 
@@ -374,55 +600,230 @@ private:
   }
   static bool all_placed(const std::array<std::size_t, 4>& q, const std::vector<bool>& placed)
   { return placed[q[0]] && placed[q[1]] && placed[q[2]] && placed[q[3]]; }
+  static bool positive(const W& x) { return Lower()(x) > 0; }
+  // Do two enclosures meet, within the slack of rounded input (a length, or a squared one)?
+  bool meet(const W& a, const W& b, int power) const
+  {
+    if (plan_.slack == 0) return internal::overlap(a, b);
+    const double e = plan_.slack * (power == 1 ? plan_.scale : plan_.scale * plan_.scale);
+    return internal::overlap(a + typename CGAL::Interval_traits<W>::Hull()(W(-e), W(e)), b);
+  }
+  static bool negative(const W& x) { return Upper()(x) < 0; }
+
+  void note_undecided(bool dropped, const std::string& what)
+  {
+    if (undecided_count_++ == 0)
+      undecided_ = "body '" + plan_.name + "': " + what + (dropped ? "; that placement is left out" : "; that placement is kept, enclosing both sides");
+  }
 
   // Does the placement so far certainly violate orientation o?
   bool violates(std::size_t o) const
   {
     const auto& q = plan_.orient_idx[o];
     W det = dot(cross(sub(x_[q[1]], x_[q[0]]), sub(x_[q[2]], x_[q[0]])), sub(x_[q[3]], x_[q[0]]));
-    typename CGAL::Interval_traits<W>::Lower lower;
-    typename CGAL::Interval_traits<W>::Upper upper;
-    if (plan_.orient_sign[o] == CGAL::POSITIVE && upper(det) < 0) return true;
-    if (plan_.orient_sign[o] == CGAL::NEGATIVE && lower(det) > 0) return true;
+    if (plan_.orient_sign[o] == CGAL::POSITIVE && negative(det)) return true;
+    if (plan_.orient_sign[o] == CGAL::NEGATIVE && positive(det)) return true;
     return false;
   }
 
-  // Depth first over the sides of each step: a side is kept unless a known distance or an
-  // orientation certainly excludes it; a step with s = 0 has one side.
-  void place(std::size_t k)
+  // Do the placed points meet these known distances (within the enclosures)?
+  bool fits(const std::vector<std::array<std::size_t, 2>>& checks) const
+  {
+    for (const auto& c : checks) {
+      P d = sub(x_[c[0]], x_[c[1]]);
+      if (!meet(dot(d, d), from_rational(*plan_.known[c[0]][c[1]]), 2)) return false;
+    }
+    return true;
+  }
+
+  // The Gram determinant of the triangle (a, b, c) relative to its sides' lengths: a lower
+  // bound (negative: not certainly a proper triangle).
+  static double flatness(const P& a, const P& b, const P& c)
+  {
+    const P u = sub(b, a), v = sub(c, a);
+    const W uu = dot(u, u), vv = dot(v, v), uv = dot(u, v);
+    const double den = CGAL::to_double(Upper()(uu)) * CGAL::to_double(Upper()(vv));
+    const double g = CGAL::to_double(Lower()(uu * vv - uv * uv));
+    return den > 0 ? g / den : -1;
+  }
+
+  // Of the points `idx` (the first 8), the three farthest from a line; false if no three
+  // are certainly off a line.
+  static bool widest_triangle(const std::vector<P>& x, const std::vector<std::size_t>& idx, std::array<std::size_t, 3>& r)
+  {
+    double best = 0;
+    const std::size_t n = (std::min)(idx.size(), std::size_t(8));
+    for (std::size_t i = 0; i < n; ++i) for (std::size_t j = i + 1; j < n; ++j) for (std::size_t l = j + 1; l < n; ++l) {
+      const double f = flatness(x[idx[i]], x[idx[j]], x[idx[l]]);
+      if (f > best) { best = f; r = {idx[i], idx[j], idx[l]}; }
+    }
+    return best > 0;
+  }
+
+  void emit(bool singular, bool undecided)
+  {
+    if (out_.size() >= max_) { truncated_ = true; return; }
+    Body_enclosure<W> e;
+    e.coordinates = x_;
+    e.in_given_frame = plan_.in_given_frame;
+    if (plan_.map_to_given) {
+      // placed in a canonical frame, then moved to the given coordinates (three of them
+      // farthest from a line carry the motion; the given points keep their exact values)
+      std::vector<std::size_t> g;
+      for (std::size_t i = 0; i < plan_.m; ++i) if (plan_.given[i]) g.push_back(i);
+      std::array<std::size_t, 3> r;
+      if (!widest_triangle(x_, g, r)) {
+        note_undecided(true, "its points with coordinates are not certainly off a line in a placement");
+        return;
+      }
+      auto given = [&](std::size_t i) {
+        P q;
+        for (std::size_t k = 0; k < 3; ++k) q[k] = from_rational((*plan_.given[i])[k]);
+        return q;
+      };
+      const Interval_rigid_map<W> motion(x_[r[0]], x_[r[1]], x_[r[2]], given(r[0]), given(r[1]), given(r[2]));
+      for (std::size_t i = 0; i < plan_.m; ++i) {
+        const P y = motion(x_[i]);
+        if (!plan_.given[i]) { e.coordinates[i] = y; continue; }
+        const P q = given(i);
+        for (std::size_t k = 0; k < 3; ++k)
+          if (!meet(y[k], q[k], 1)) return;  // the given coordinates certainly do not fit
+        e.coordinates[i] = q;
+      }
+      e.in_given_frame = true;
+    }
+    e.variant = int(out_.size());
+    e.consistent = true;
+    e.singular = !plan_.singular.empty() || singular;
+    e.undecided = undecided;
+    out_.push_back(std::move(e));
+  }
+
+  // After step k placed its points: its distance and orientation checks, then the next step.
+  void next(std::size_t k, bool singular, bool undecided)
+  {
+    if (!fits(checks_[k])) return;
+    for (std::size_t o : orientations_[k]) if (violates(o)) return;
+    place(k + 1, singular, undecided);
+  }
+
+  // Depth first over the sides of each step and the placements of each part: a choice is
+  // kept unless a known distance or an orientation certainly excludes it; a step with s = 0
+  // has one side.
+  void place(std::size_t k, bool singular, bool undecided)
   {
     if (truncated_) return;
     const auto& steps = plan_.steps;
-    if (k == steps.size()) {
-      if (out_.size() >= max_) { truncated_ = true; return; }
-      Body_enclosure<W> e;
-      e.coordinates = x_;
-      e.variant = int(out_.size());
-      e.in_given_frame = plan_.in_given_frame;
-      e.consistent = true;
-      e.singular = !plan_.singular.empty();
-      out_.push_back(std::move(e));
-      return;
-    }
+    if (k == steps.size()) { emit(singular, undecided); return; }
     const Placement_step& s = steps[k];
-    const P& A = x_[s.A];
-    const P u = sub(x_[s.B], A), v = sub(x_[s.C], A), n = cross(u, v);
-    P w;
-    for (std::size_t i = 0; i < 3; ++i) w[i] = A[i] + a_[k] * u[i] + b_[k] * v[i];
-    for (int side : {1, -1}) {
-      if (side < 0 && s.sign != CGAL::POSITIVE) break;
-      P xp;
-      for (std::size_t i = 0; i < 3; ++i) xp[i] = side > 0 ? w[i] + t_[k] * n[i] : w[i] - t_[k] * n[i];
-      bool fits = true;
-      for (std::size_t q : checks_[k]) {
-        P d = sub(xp, x_[q]);
-        if (!internal::overlap(dot(d, d), from_rational(*plan_.known[s.p][q]))) { fits = false; break; }
+    if (s.kind == Placement_step_kind::PART) { superpose(k, singular, undecided); return; }
+    W a = a_[k], b = b_[k], t = t_[k];
+    std::size_t A = s.A, B = s.B, C = s.C;
+    bool two_sides = s.sign == CGAL::POSITIVE, here_undecided = false;
+    if (s.kind == Placement_step_kind::INTERVAL) {
+      // the reference triple farthest from a line, then a, b and s from the placed points
+      double best = 0;
+      bool found = false;
+      for (const auto& r : s.references) {
+        double f = flatness(x_[r[0]], x_[r[1]], x_[r[2]]);
+        if (f > best) { best = f; A = r[0]; B = r[1]; C = r[2]; found = true; }
       }
-      if (!fits) continue;
+      if (!found) {
+        note_undecided(true, "the points '" + plan_.labels[s.p] + "' is placed from are not certainly off a line");
+        return;
+      }
+      const P u = sub(x_[B], x_[A]), v = sub(x_[C], x_[A]);
+      const W uu = dot(u, u), vv = dot(v, v), uv = dot(u, v), G = uu * vv - uv * uv;
+      const W r1 = from_rational(*plan_.known[s.p][A]), r2 = from_rational(*plan_.known[s.p][B]),
+              r3 = from_rational(*plan_.known[s.p][C]);
+      const W alpha = (r1 - r2 + uu) / W(2), beta = (r1 - r3 + vv) / W(2);
+      a = (alpha * vv - beta * uv) / G;
+      b = (beta * uu - alpha * uv) / G;
+      const W S = (r1 - (a * a * uu + W(2) * a * b * uv + b * b * vv)) / G;
+      if (negative(S)) return;  // no real point on this branch
+      if (positive(S)) { t = CGAL::sqrt(S); two_sides = true; }
+      else {
+        // s not separated from 0: one placement enclosing both sides (and the double point)
+        const W top = CGAL::sqrt(W(Upper()(S)));
+        t = typename CGAL::Interval_traits<W>::Hull()(-top, top);
+        two_sides = false;
+        here_undecided = true;
+        note_undecided(false, "the height of '" + plan_.labels[s.p] + "' over the plane of '" + plan_.labels[A] + "', '" +
+                                  plan_.labels[B] + "' and '" + plan_.labels[C] + "' is not separated from 0");
+      }
+    }
+    const P& XA = x_[A];
+    const P u = sub(x_[B], XA), v = sub(x_[C], XA), n = cross(u, v);
+    P w;
+    for (std::size_t i = 0; i < 3; ++i) w[i] = XA[i] + a * u[i] + b * v[i];
+    for (int side : {1, -1}) {
+      if (side < 0 && !two_sides) break;
+      P xp;
+      for (std::size_t i = 0; i < 3; ++i) xp[i] = side > 0 ? w[i] + t * n[i] : w[i] - t * n[i];
       x_[s.p] = xp;
+      next(k, singular, undecided || here_undecided);
+    }
+  }
+
+  // A part superposed on its placed points, one placement after the other: the rigid motion
+  // that takes three of them (the farthest from a line) to their places maps the others;
+  // a placement whose images miss a placed point is excluded. Two placements of the part
+  // that put the body's points at the same places count once.
+  void superpose(std::size_t k, bool singular, bool undecided)
+  {
+    const Placement_step& s = plan_.steps[k];
+    const auto& map = plan_.part_map[s.part];
+    std::vector<std::size_t> on;  // the part's local indices of points placed before this step
+    for (std::size_t i = 0; i < map.size(); ++i)
+      if (map[i] != none && std::find(s.places.begin(), s.places.end(), map[i]) == s.places.end()) on.push_back(i);
+    std::vector<std::vector<P>> seen;
+    bool checked = false;
+    for (const auto& e : part_placements_[s.part]) {
+      const auto& y = e.coordinates;
+      std::vector<P> image(map.size());
+      if (on.size() >= 3) {
+        std::array<std::size_t, 3> r;
+        if (!widest_triangle(y, on, r)) {
+          note_undecided(true, "the points it shares with its part '" + plan_.parts[s.part].name + "' are not certainly off a line");
+          continue;
+        }
+        const Interval_rigid_map<W> motion(y[r[0]], y[r[1]], y[r[2]], x_[map[r[0]]], x_[map[r[1]]], x_[map[r[2]]]);
+        for (std::size_t i = 0; i < map.size(); ++i) if (map[i] != none) image[i] = motion(y[i]);
+      } else if (on.empty()) {
+        for (std::size_t i = 0; i < map.size(); ++i) image[i] = y[i];
+      } else {
+        // one or two points shared: their distance must be the part's (a check only)
+        bool ok = true;
+        for (std::size_t i = 0; i < on.size(); ++i) for (std::size_t j = i + 1; j < on.size(); ++j) {
+          P d1 = sub(x_[map[on[i]]], x_[map[on[j]]]), d2 = sub(y[on[i]], y[on[j]]);
+          if (!meet(dot(d1, d1), dot(d2, d2), 2)) ok = false;
+        }
+        if (!ok) continue;
+        for (std::size_t i : on) image[i] = x_[map[i]];
+      }
       bool ok = true;
-      for (std::size_t o : orientations_[k]) if (violates(o)) { ok = false; break; }
-      if (ok) place(k + 1);
+      for (std::size_t i : on)
+        for (std::size_t c = 0; c < 3 && ok; ++c) ok = meet(image[i][c], x_[map[i]][c], 1);
+      if (!ok) continue;
+      if (s.places.empty()) {
+        // a check: one fitting placement is enough (it places nothing)
+        if (!checked) { checked = true; place(k + 1, singular || e.singular, undecided || e.undecided); }
+        continue;
+      }
+      std::vector<P> mine;
+      for (std::size_t i = 0; i < map.size(); ++i) if (map[i] != none) mine.push_back(image[i]);
+      bool again = false;
+      for (const auto& other : seen) {
+        bool same = true;
+        for (std::size_t i = 0; i < mine.size() && same; ++i)
+          for (std::size_t c = 0; c < 3 && same; ++c) same = internal::overlap(mine[i][c], other[i][c]);
+        if (same) { again = true; break; }
+      }
+      if (again) continue;
+      seen.push_back(mine);
+      for (std::size_t i = 0; i < map.size(); ++i)
+        if (map[i] != none && std::find(s.places.begin(), s.places.end(), map[i]) != s.places.end()) x_[map[i]] = image[i];
+      next(k, singular || e.singular, undecided || e.undecided);
     }
   }
 };
@@ -455,6 +856,7 @@ std::vector<Body_enclosure<IT>> convert_enclosures(std::vector<Body_enclosure<W>
       f.variant = e.variant;
       f.in_given_frame = e.in_given_frame;
       f.singular = e.singular;
+      f.undecided = e.undecided;
       for (const auto& x : e.coordinates) {
         std::array<IT, 3> y;
         // Gmpfi to double intervals rounds outward; double intervals into Gmpfi are exact
@@ -484,6 +886,7 @@ std::string placement_key(const Rigid_body_collection<Traits>& c, const typename
   }
   for (const auto& d : b.squared_distances) os << d.a << '-' << d.b << ' ' << exact_rational(d.squared) << '\n';
   for (const auto& o : b.orientations) os << o.a << ' ' << o.b << ' ' << o.c << ' ' << o.d << ' ' << int(o.sign) << '\n';
+  for (const auto& part : b.parts) field(placement_key(c, part));
   return os.str();
 }
 
@@ -507,6 +910,12 @@ struct Placement_enumeration
   /// nonempty: every placement is a double one (a point exactly on the plane of its three
   /// references, decided exactly), and where
   std::string singular;
+  /// nonempty: a choice that only intervals can decide (a point placed through a rigid part
+  /// or from references whose distances are not known exactly) was not decided at the
+  /// final precision, and where: such a placement is kept enclosing both sides (`undecided`),
+  /// or, where three shared points are not certainly off a line, left out. The answer of a
+  /// solve that uses this body is then not complete.
+  std::string undecided;
 };
 
 /// \ingroup PkgRigidIncidenceRef
@@ -551,8 +960,9 @@ std::shared_ptr<const Placement_enumeration<IT>> cached_placements(const Rigid_b
       out->relative_width = relative_width(all, plan.scale);
       out->complete = !e.truncated();
       out->precision = 53;
+      out->undecided = e.undecided();
       out->placements = convert_enclosures<IT>(std::move(all));
-      done = out->relative_width <= target;
+      done = out->relative_width <= target && out->undecided.empty();
     }
 #ifdef CGAL_USE_MPFI
     for (unsigned bits = is_interval_nt<IT>::value ? 128 : start; !done; bits *= 2) {
@@ -562,14 +972,17 @@ std::shared_ptr<const Placement_enumeration<IT>> cached_placements(const Rigid_b
       out->relative_width = relative_width(all, plan.scale);
       out->complete = !e.truncated();
       out->precision = bits;
+      out->undecided = e.undecided();
       out->placements = convert_enclosures<IT>(std::move(all));
-      done = out->relative_width <= target || 2 * bits > (std::max)(maximal_placement_precision, 4 * start);
+      done = (out->relative_width <= target && out->undecided.empty()) ||
+             2 * bits > (std::max)(maximal_placement_precision, 4 * start);
     }
 #endif
     (void)done;
     // every side of some point certainly excluded by a further distance or an orientation:
     // no real placement either (interval exclusion is rigorous)
-    if (out->complete && out->placements.empty())
+    if (!out->undecided.empty()) out->undecided = "at " + std::to_string(out->precision) + " bits, " + out->undecided;
+    if (out->complete && out->placements.empty() && out->undecided.empty())
       out->inconsistent = "body '" + b.name + "': no placement fits all its distances and orientations (each side of a"
                           " trilaterated point is excluded by a further distance or an orientation, in intervals at " +
                           std::to_string(out->precision) + " bits)";

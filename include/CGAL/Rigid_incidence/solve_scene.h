@@ -139,6 +139,9 @@ struct Scene_solve_statistics
   std::size_t roots = 0;                   ///< roots before merging
   std::size_t duplicates = 0;              ///< roots merged into a configuration found before
   std::size_t spurious = 0;                ///< roots rejected: a body would have to be mirrored
+  /// combinations of placements not solved: two bodies put two shared points at distances
+  /// that certainly differ (their enclosures are disjoint), so no configuration has them
+  std::size_t placements_excluded = 0;
   std::size_t curve_boxes = 0;             ///< boxes visited by the curve tracer, all systems
   double reduce_seconds = 0;               ///< building the reduced systems
   double solve_seconds = 0;                ///< the subdivision solver
@@ -156,6 +159,9 @@ struct Scene_placement_report
   double relative_width = 0;    ///< widest coordinate enclosure, relative to the body's size
   std::string singular;         ///< nonempty: every placement is a double one, and where
   std::string inconsistent;     ///< nonempty: no real placement (decided exactly), and why
+  /// nonempty: a choice left undecided at the final precision (see
+  /// `Placement_enumeration::undecided`); the result is then not complete
+  std::string undecided;
 };
 
 /// \ingroup PkgRigidIncidenceSolver
@@ -203,6 +209,7 @@ inline Scene_placement_report placement_report(const std::string& body, const Pl
   r.relative_width = e.relative_width;
   r.singular = e.singular;
   r.inconsistent = e.inconsistent;
+  r.undecided = e.undecided;
   return r;
 }
 
@@ -479,6 +486,7 @@ Scene_solve_result solve_scene(const Rigid_body_collection<Traits>& original, co
       out.limits.push_back("body '" + r.body + "' has more than " + std::to_string(r.placements) +
                            " placements (maximal_placements): only the first " + std::to_string(r.placements) + " were solved");
     if (!r.inconsistent.empty() && out.no_configuration.empty()) out.no_configuration = r.inconsistent;
+    if (!r.undecided.empty()) out.limits.push_back("placements of body '" + r.body + "' not decided: " + r.undecided);
   }
   // bodies outside the covering set known by distances with more than one placement: the
   // reduced system fixes their covered points (by exact distances), and each placement that
@@ -505,6 +513,7 @@ Scene_solve_result solve_scene(const Rigid_body_collection<Traits>& original, co
     }
     out.placements.push_back(internal::placement_report(c.body(b).name, *e));
     if (!e->inconsistent.empty() && out.no_configuration.empty()) out.no_configuration = e->inconsistent;
+    if (!e->undecided.empty()) out.limits.push_back("placements of body '" + c.body(b).name + "' not decided: " + e->undecided);
   }
   if (!out.no_configuration.empty()) return out;
   if (nc_product > parameters.maximal_placements)
@@ -542,11 +551,59 @@ Scene_solve_result solve_scene(const Rigid_body_collection<Traits>& original, co
     orientation.push_back(pts);
   }
 
+  // Pairs of covering bodies with several placements that share two or more points: a
+  // combination of placements that puts two shared points at certainly different distances
+  // has no configuration (a body placed through another body's placement, e.g. an implied
+  // triangle whose side runs through a merged body, fits only that placement).
+  struct Shared_pair { std::size_t i, j; std::vector<std::vector<bool>> fits; };
+  std::vector<Shared_pair> shared_pairs;
+  {
+    const auto& cover = tree.covering_set;
+    for (std::size_t x = 0; x < cover.size(); ++x)
+      for (std::size_t y = x + 1; y < cover.size(); ++y) {
+        const std::size_t i = cover[x], j = cover[y];
+        if (radix_p[i] < 2 && radix_p[j] < 2) continue;
+        if (c.body(i).all_coordinates() && c.body(j).all_coordinates()) continue;
+        std::vector<std::size_t> common = c.common_points(i, j);
+        if (common.size() < 2) continue;
+        auto enc = [&](std::size_t b) {
+          std::vector<Body_enclosure<CGAL::Interval_nt<false>>> v;
+          if (c.body(b).all_coordinates()) v.push_back(enclose_coordinates<CGAL::Interval_nt<false>>(c, b, 0));
+          else v = internal::cached_placements<CGAL::Interval_nt<false>>(c, b, parameters.maximal_placements)->placements;
+          return v;
+        };
+        const auto ei = enc(i), ej = enc(j);
+        if (ei.empty() || ej.empty()) continue;
+        Shared_pair sp{i, j, std::vector<std::vector<bool>>(ei.size(), std::vector<bool>(ej.size(), true))};
+        bool any = false;
+        typename CGAL::Interval_nt<false>::Protector protect;
+        for (std::size_t vi = 0; vi < ei.size(); ++vi)
+          for (std::size_t vj = 0; vj < ej.size(); ++vj)
+            for (std::size_t u = 0; u < common.size() && sp.fits[vi][vj]; ++u)
+              for (std::size_t w = u + 1; w < common.size() && sp.fits[vi][vj]; ++w) {
+                auto sq = [&](const Body_enclosure<CGAL::Interval_nt<false>>& e, std::size_t b) {
+                  const auto& a = e.coordinates[c.body(b).local(common[u])];
+                  const auto& d = e.coordinates[c.body(b).local(common[w])];
+                  return internal::dot(internal::sub(a, d), internal::sub(a, d));
+                };
+                if (!internal::overlap(sq(ei[vi], i), sq(ej[vj], j))) { sp.fits[vi][vj] = false; any = true; }
+              }
+        if (any) shared_pairs.push_back(std::move(sp));
+      }
+  }
+  auto placements_fit = [&](const std::vector<int>& v) {
+    for (const auto& sp : shared_pairs)
+      if (std::size_t(v[sp.i]) < sp.fits.size() && std::size_t(v[sp.j]) < sp.fits[0].size() && !sp.fits[std::size_t(v[sp.i])][std::size_t(v[sp.j])])
+        return false;
+    return true;
+  };
+
   struct Candidate { Scene_configuration s; double size; };
   std::vector<Candidate> found;
   std::vector<internal::Scene_piece> pieces;
   std::string positive;
   do {
+    if (!placements_fit(placements)) { ++st.placements_excluded; continue; }
     std::vector<int> charts(radix_c.size(), 0);
     do {
       auto t1 = Clock::now();

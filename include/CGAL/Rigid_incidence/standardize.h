@@ -259,7 +259,9 @@ private:
   // frame when three non-collinear points have coordinates in both (a rational rigid map);
   // otherwise they enter as their pairwise distances plus the orientation of four of them
   // (so that no user body can come back mirrored). Every distance either body knows is kept.
-  Body combine(const Body& P, const Body& O) const
+  // With `o_as_part`, O is kept whole as a rigid part of the union: its points are placed
+  // by superposing it on three shared points (whose distances are not all known exactly).
+  Body combine(const Body& P, const Body& O, bool o_as_part = false) const
   {
     Body m;
     m.name = P.name;
@@ -339,8 +341,17 @@ private:
     for (const auto& d : m.squared_distances)
       if (!(m.has_coordinates[d.a] && m.has_coordinates[d.b])) kd.push_back(d);
     m.squared_distances = kd;
+    for (const Body& x : P.parts) add_part(m, x);
+    if (o_as_part) add_part(m, O);
+    else for (const Body& x : O.parts) add_part(m, x);
     m.mirror_variants = m.all_coordinates() ? 1 : 0; // 0: enumerate with enclose_all_placements()
     return m;
+  }
+
+  static void add_part(Body& m, const Body& part)
+  {
+    for (const Body& x : m.parts) if (x.name == part.name) return;
+    m.parts.push_back(part);
   }
 
   // Every pairwise distance both bodies know among `pts` must agree.
@@ -389,10 +400,16 @@ private:
         check_agreement(bodies[i], bodies[j], common);
         auto dm = distance_matrix(bodies[i], &bodies[j], common);
         std::optional<std::array<std::size_t, 3>> base = non_collinear_triple(dm);
-        if (!base && !all_known(dm))
-          throw Input_error("standardize: bodies '" + bodies[i].name + "' and '" + bodies[j].name + "' share the points " +
-                            labels_of(c_, common) + ", but no three of them are known exactly to be non-collinear (their"
-                            " distances run through placements from distances); not supported yet");
+        if (!base && !all_known(dm)) {
+          // The shared points' distances run through placements: whether they are off a line
+          // is decided per placement (enumerate_placements), with the other body as a rigid part.
+          Body merged = merge(bodies[i], bodies[j], true);
+          note("bodies '" + bodies[i].name + "' and '" + bodies[j].name + "' share the points " + labels_of(c_, common) +
+               ", whose distances run through placements, and are merged into '" + merged.name + "' (one kept as a rigid part)");
+          bodies.erase(bodies.begin() + j);
+          bodies[i] = merged;
+          return true;
+        }
         if (!base)
           throw Input_error("bodies '" + bodies[i].name + "' and '" + bodies[j].name + "' share " + std::to_string(common.size()) +
                             " collinear points (" + labels_of(c_, common) +
@@ -485,11 +502,11 @@ private:
   // Does `b` hold the frame body's coordinates (in the frame body's frame)?
   bool holds_frame(const Body& b) const { return b.name == frame_holder_; }
 
-  Body merge(const Body& A, const Body& B)
+  Body merge(const Body& A, const Body& B, bool other_as_part = false)
   {
     const bool a_first = primary_first(A, B);
     const bool frame_kept = holds_frame(a_first ? A : B);
-    Body m = a_first ? combine(A, B) : combine(B, A);
+    Body m = a_first ? combine(A, B, other_as_part) : combine(B, A, other_as_part);
     m.name = "merged" + std::to_string(++merged_count_) + "(" + A.name + "+" + B.name + ")";
     m.origin = Body_origin::MERGED;
     if (frame_kept) frame_holder_ = m.name;
@@ -573,9 +590,6 @@ private:
       }
     if (!planar_nondegenerate && complete)
       throw Input_error(who + ": its fixed distances put all its points on one line (a degenerate body)");
-    if (!planar_nondegenerate)
-      throw Input_error("standardize: " + who + ": no three of its points are known exactly to be non-collinear (their"
-                        " distances run through placements from distances); not supported yet");
     bool spatial = false;
     if (k.size() <= 12) {
       for (std::size_t a = 0; a < k.size(); ++a) for (std::size_t b = a + 1; b < k.size(); ++b)
@@ -608,6 +622,13 @@ private:
     b.sources = sources;
     // a clique of distances: its mirror image satisfies them too; with a distance unknown, enumerate
     b.mirror_variants = !complete ? 0 : (spatial ? 2 : 1);
+    // a pair fixed by a body that does not know its distance exactly: that body is a rigid
+    // part of the implied body (its placements fix the pair)
+    for (std::size_t u = 0; u < k.size(); ++u)
+      for (std::size_t v = u + 1; v < k.size(); ++v)
+        if (!dm[u][v])
+          for (const Body& o : c_.bodies())
+            if (o.contains(k[u]) && o.contains(k[v])) { add_part(b, o); break; }
     note(who + " is added as body '" + b.name + "' (from " + [&] { std::string s; for (std::size_t i = 0; i < sources.size(); ++i) s += (i ? ", " : "") + sources[i]; return s; }() + ")");
     c_.mutable_bodies().push_back(b);
   }
@@ -644,8 +665,13 @@ A body of 2 points is a bar and enters as its distance; a body of 3 or more coll
 (5 dof) is rejected. The result keeps the name of the input; its `frame()` names the body that
 holds the frame body's coordinates. `log`, if given, receives one line per step taken.
 
-\throws Input_error naming the bodies, points or distances that disagree, or (documented
-limitation) when no three points shared by two bodies are known exactly to be non-collinear.
+Two bodies sharing three or more points whose distances are not all known exactly (they run
+through placements from distances) are merged too: the union keeps one of them whole as a
+rigid part (`Rigid_body_collection::Body::parts`), and whether the shared points are off a
+line is decided per placement by `enumerate_placements()`. An implied body with a pair whose
+distance is not known exactly keeps the body fixing that pair as a rigid part.
+
+\throws Input_error naming the bodies, points or distances that disagree.
 */
 template <class Traits>
 Rigid_body_collection<Traits> standardize(const Rigid_body_collection<Traits>& collection,
