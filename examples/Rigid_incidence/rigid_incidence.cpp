@@ -196,6 +196,8 @@ int analyze(const Options& o)
   RI::Rigid_body_collection<Traits> input = RI::make_collection<Traits>(scene);
   if (o.command == "family") return family_command::family(scene, input, o.family, o.scene);
   std::vector<std::string> log;
+  for (const auto& a : input.aliases())
+    log.push_back("'" + a.alias + "' and '" + a.label + "' are one point, '" + a.label + "' (" + a.why + ")");
   RI::Rigid_body_collection<Traits> c;
   try {
     c = RI::standardize(input, &log);

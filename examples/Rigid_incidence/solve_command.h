@@ -448,6 +448,9 @@ int solve(const RI::Scene& scene, const RI::Rigid_body_collection<Traits>& input
     j["diagnosis"] = r.diagnosis.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(r.diagnosis);
     j["no_configuration"] = r.no_configuration.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(r.no_configuration);
     j["limits"] = r.limits;
+    nlohmann::ordered_json co = nlohmann::ordered_json::array();
+    for (const auto& a : input.aliases()) co.push_back({{"label", a.alias}, {"same_point_as", a.label}, {"because", a.why}});
+    j["coincidences"] = co;
     nlohmann::ordered_json pl = nlohmann::ordered_json::array();
     for (const auto& x : r.placements)
       pl.push_back({{"body", x.body}, {"placements", x.placements}, {"complete", x.complete}, {"precision_bits", x.precision},
@@ -535,6 +538,8 @@ int solve(const RI::Scene& scene, const RI::Rigid_body_collection<Traits>& input
   std::cout << std::setprecision(10);
   std::cout << "scene " << scene_file << ": reduced system of " << r.variables.size() << " variables, " << r.equations << " equations; "
             << st.chart_combinations << " chart combination(s) solved" << (r.fast ? " in the FAST, NON-CERTIFIED mode" : "") << "\n";
+  for (const auto& a : input.aliases())
+    std::cout << "'" << a.alias << "' and '" << a.label << "' are one point, '" << a.label << "' (" << a.why << ")\n";
   if (o.scale_exponent != 0)
     std::cout << "the scene's size is about 2^" << o.scale_exponent << ": solved scaled by 2^" << -o.scale_exponent
               << " (exactly), its configurations given back at the scene's own scale\n";

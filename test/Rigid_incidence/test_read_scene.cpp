@@ -257,12 +257,7 @@ static std::vector<Bad_case> malformed_cases()
   add("distance_unknown_label", with_distances(R"({"between": ["B","Z"], "squared": "2"})"), {"distances[0]", "'Z'"});
   add("distance_squared_negative", with_distances(R"({"between": ["B","D"], "squared": "-2"})"),
       {"distances[0]", "squared", "positive"});
-  add("distance_squared_zero", with_distances(R"({"between": ["B","D"], "squared": 0})"), {"distances[0]", "squared", "positive"});
-  add("distance_squared_zero_rational", with_distances(R"({"between": ["B","D"], "squared": "0/7"})"),
-      {"distances[0]", "squared", "positive"});
   add("distance_length_negative", with_distances(R"({"between": ["B","D"], "length": -1.5})"),
-      {"distances[0]", "length", "positive"});
-  add("distance_length_zero", with_distances(R"({"between": ["B","D"], "length": "-0.0"})"),
       {"distances[0]", "length", "positive"});
   add("distance_nan", with_distances(R"({"between": ["B","D"], "squared": "NaN"})"), {"distances[0]", "squared", "NaN"});
   add("distance_infinite", with_distances(R"({"between": ["B","D"], "length": "Infinity"})"),
@@ -600,6 +595,46 @@ static int write_malformed(const std::string& dir)
   return 0;
 }
 
+// A distance of 0 is a coincidence (issue 27, item 5): the labels name one point.
+template <class Traits>
+void coincidences(const char* kernel)
+{
+  const std::string k = std::string("coincidence [") + kernel + "]: ";
+  auto collect = [](const std::string& text) {
+    std::istringstream in(text);
+    return RI::make_collection<Traits>(RI::read_scene(in, "mem/coincidence.json"));
+  };
+  for (const std::string& zero : {std::string("\"squared\": 0"), std::string("\"squared\": \"0/7\""), std::string("\"length\": \"-0.0\"")}) {
+    auto c = collect(with_distances(R"({"between": ["D","B"], )" + zero + "}"));
+    // B is seen first (body c1): D becomes another name of it
+    CHECK(c.point_index("D") == decltype(c)::npos && c.point_index("B") != decltype(c)::npos, k << zero << ": 'D' is still a point");
+    CHECK(c.aliases().size() == 1 && c.aliases()[0].alias == "D" && c.aliases()[0].label == "B" &&
+              c.aliases()[0].why.find("distances[0]") != std::string::npos,
+          k << zero << ": the alias D -> B is missing");
+    CHECK(c.body(c.body_index("c2")).contains(c.point_index("B")), k << zero << ": body c2 does not hold 'B'");
+    CHECK(c.distances().empty(), k << zero << ": the distance of 0 stayed a distance");
+  }
+  // a chain of coincidences, and a distance through them: one class, its first label
+  {
+    const std::string c3 = R"({"name": "c3", "points": {"A": ["0","0","0"], "F": ["0","2","0"], "G": ["2","0","1"]}})";
+    auto c = collect(scene(BODY_C1 + ", " + BODY_C2 + ", " + c3,
+                           R"("distances": [{"between": ["F","D"], "squared": 0}, {"between": ["D","B"], "squared": 0}, {"between": ["G","E"], "squared": "3"}])"));
+    CHECK(c.aliases().size() == 2, k << "chain: " << c.aliases().size() << " aliases");
+    for (const auto& a : c.aliases()) CHECK(a.label == "B", k << "chain: '" << a.alias << "' names '" << a.label << "', not 'B'");
+    CHECK(c.distances().size() == 1, k << "chain: " << c.distances().size() << " distances left, not 1");
+  }
+  // two labels of one point at different places in one body, or at a nonzero distance: no
+  // real configuration (not a malformed file)
+  bool threw = false;
+  try { collect(with_distances(R"({"between": ["B","C"], "squared": 0})")); }
+  catch (const RI::No_real_configuration& e) { threw = std::string(e.what()).find("'c1'") != std::string::npos; }
+  CHECK(threw, k << "a body holding both labels apart is not 'no real configuration' naming it");
+  threw = false;
+  try { collect(with_distances(R"({"between": ["B","D"], "squared": 0}, {"between": ["D","B"], "squared": 2})")); }
+  catch (const RI::No_real_configuration& e) { threw = std::string(e.what()).find("distances[1]") != std::string::npos; }
+  CHECK(threw, k << "a nonzero distance between two labels of one point is not 'no real configuration'");
+}
+
 int main(int argc, char** argv)
 {
   if (argc > 2 && std::string(argv[1]) == "--write-malformed") return write_malformed(argv[2]);
@@ -607,6 +642,8 @@ int main(int argc, char** argv)
   auto t0 = std::chrono::steady_clock::now();
   accepted_scenes<Exact_traits>("exact");
   accepted_scenes<Epick_traits>("epick");
+  coincidences<Exact_traits>("exact");
+  coincidences<Epick_traits>("epick");
   const auto cases = malformed_cases();
   for (const auto& c : cases) {
     expect_rejected<Exact_traits>("exact", c);

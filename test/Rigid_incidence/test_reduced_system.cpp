@@ -1051,13 +1051,15 @@ static Q eq5(const Q& ti, const Q& tj)
 
 static void check_quad_r0()
 {
-  // The library refuses a zero distance (add_distance: "a distance must be positive"), as it
-  // must for a distance that is a length; r = 0 is reached instead through linearity: each
-  // equation is num - r^2 den with num and den independent of r, so P_0 = 2 P_1 - P_2 from the
-  // systems with r^2 = 1 and r^2 = 2 (the same tree, the same equations).
-  bool threw = false;
-  try { from_json(quad_json("0")); } catch (const RI::Input_error&) { threw = true; }
-  CHECK(threw, "quad: a zero distance accepted");
+  // A distance of 0 in a scene is a coincidence (the four apexes become one point: a pyramid,
+  // not the paper's equation at r = 0), so r = 0 is reached through linearity: each equation
+  // is num - r^2 den with num and den independent of r, so P_0 = 2 P_1 - P_2 from the systems
+  // with r^2 = 1 and r^2 = 2 (the same tree, the same equations).
+  {
+    Collection c0 = from_json(quad_json("0"));
+    CHECK(c0.aliases().size() == 3 && c0.distances().empty(), "quad: the distances of 0 are not one apex (" << c0.aliases().size()
+                                                              << " aliases, " << c0.distances().size() << " distances)");
+  }
   Collection c1 = from_json(quad_json("1")), c2 = from_json(quad_json("2"));
   auto t1 = RI::optimal_incidence_tree(c1), t2 = RI::optimal_incidence_tree(c2);
   auto s1 = RI::select_well_formed_incidences(c1, t1), s2 = RI::select_well_formed_incidences(c2, t2);

@@ -249,6 +249,13 @@ Configuration configuration(const Reduced_system<Traits, NT>& r, const std::vect
     for (std::size_t b = 0; b < nb; ++b) if (conf.body_placed[b]) conf.poses[b] = to_frame * conf.poses[b];
     conf.frame = c.frame();
   }
+  // labels that name a point under another label (a distance of 0): the same place
+  for (const auto& a : c.aliases()) {
+    const std::size_t q = c.point_index(a.label);
+    conf.labels.push_back(a.alias);
+    conf.points.push_back(conf.points[q]);
+    conf.placed.push_back(conf.placed[q]);
+  }
   return conf;
 }
 

@@ -225,6 +225,26 @@ public:
   /// The fixed distances (those not absorbed into a body).
   const std::vector<Distance>& distances() const { return distances_; }
 
+  /// A label that names a point of the collection under another label (a coincidence: a
+  /// distance of 0 in the scene, see `make_collection()`).
+  struct Alias
+  {
+    std::string alias;  ///< the other label
+    std::string label;  ///< the label of the point in the collection
+    std::string why;    ///< what makes them one point
+  };
+  /// Declares `alias` another name of point `label`; configurations give it the same place.
+  void add_alias(const std::string& alias, const std::string& label, const std::string& why)
+  {
+    if (point_index(label) == npos) throw Input_error("alias '" + alias + "': names unknown point '" + label + "'");
+    if (point_index(alias) != npos) throw Input_error("alias '" + alias + "': is a point of the collection");
+    for (const Alias& a : aliases_)
+      if (a.alias == alias) throw Input_error("alias '" + alias + "': given twice");
+    aliases_.push_back(Alias{alias, label, why});
+  }
+  /// The aliases, in the order they were declared.
+  const std::vector<Alias>& aliases() const { return aliases_; }
+
   /// Names the body in whose local frame results are reported (default: the first body).
   void set_frame(const std::string& body_name)
   {
@@ -319,6 +339,7 @@ private:
   std::map<std::string, std::size_t> index_;
   std::vector<Body> bodies_;
   std::vector<Distance> distances_;
+  std::vector<Alias> aliases_;
   std::string frame_;
 };
 

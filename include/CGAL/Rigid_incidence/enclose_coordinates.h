@@ -1021,6 +1021,19 @@ again with `CGAL::Gmpfi` at 128, 256, ... bits up to `maximal_placement_precisio
 result says which precision it used and how wide it is. Without MPFI (`CGAL_USE_MPFI`
 undefined) the double enclosures are returned as they are.
 
+A body with rigid parts (`Rigid_body_collection::Body::parts`, made by `standardize()` where
+shared points' distances run through placements) is placed with two more kinds of steps,
+where no exact trilateration is left: a part with three placed points is superposed on them
+once per placement of its own (enumerated the same way, recursively), which places its other
+points or, with nothing left to place, checks them; and a point at known distances from
+three placed points whose own distances are not known exactly is trilaterated in intervals.
+Those decisions (a height's sign, three points off a line) are made in intervals, raised in
+precision like the widths; one still open at `maximal_placement_precision` is reported in
+`undecided` (the placement kept enclosing both sides, or left out), never dropped silently.
+A body with coordinates that cannot start its placement is placed in a canonical frame and
+moved onto its coordinates. With rounded input (a kernel of doubles) a placed point meets a
+coordinate or a distance within 1e-9 of the body's size.
+
 The enumerations are cached per thread by the body's content, so that asking for one
 placement after another costs one enumeration.
 
@@ -1028,7 +1041,8 @@ placement after another costs one enumeration.
 \param c the collection (typically the output of `standardize()`)
 \param body the index of the body in `c`
 \param max_placements stop after this many placements (then `complete` is false)
-\throws Input_error if the body's distances do not let its points be placed one after the other.
+\throws Input_error if the body's distances and rigid parts do not let its points be placed
+one after the other.
 */
 template <class IT, class Traits>
 Placement_enumeration<IT> enumerate_placements(const Rigid_body_collection<Traits>& c, std::size_t body,

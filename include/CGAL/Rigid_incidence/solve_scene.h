@@ -23,7 +23,10 @@
 #include <chrono>
 #include <cmath>
 #include <array>
+#include <sstream>
 #include <string>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -228,6 +231,32 @@ std::vector<int> placement_counts(const Rigid_body_collection<Traits>& c, const 
     if (reports) reports->push_back(placement_report(c.body(b).name, *e));
   }
   return n;
+}
+
+// The widest coefficient enclosure of a system, relative to the largest coefficient of its
+// equation (0 for exact coefficients).
+template <class NT>
+double coefficient_width(const Polynomial_system<NT>& s)
+{
+  double w = 0;
+  for (const auto& f : s.equations) {
+    double big = 0, wide = 0;
+    for (const auto& t : f.terms()) {
+      const std::pair<double, double> i = CGAL::to_interval(t.second);
+      big = (std::max)(big, (std::max)(std::abs(i.first), std::abs(i.second)));
+      wide = (std::max)(wide, i.second - i.first);
+    }
+    if (big > 0) w = (std::max)(w, wide / big);
+  }
+  return w;
+}
+
+inline std::string short_number(double x)
+{
+  std::ostringstream os;
+  os.precision(2);
+  os << x;
+  return os.str();
 }
 
 // Advances a mixed-radix counter; false when it wraps around.
@@ -638,7 +667,17 @@ Scene_solve_result solve_scene(const Rigid_body_collection<Traits>& original, co
         ++st.excluded_at_once;
         st.excluded_at_once_seconds += ts;
       }
-      if (positive.empty() && !res.diagnosis.empty()) positive = res.diagnosis;
+      if (positive.empty() && !res.diagnosis.empty()) {
+        // say how far precision is ruled out as the cause: the widest coefficient enclosure
+        // of the system, relative to its equation's largest coefficient (0: exact)
+        positive = res.diagnosis + "; the reduced system's coefficients are " +
+                   (std::is_same<NT, CGAL::Gmpq>::value
+                        ? std::string("exact")
+                        : "enclosed to a relative width of " + internal::short_number(internal::coefficient_width(sys)));
+        std::string bits;
+        for (const auto& pr : out.placements) bits += (bits.empty() ? " (placements: " : ", ") + std::to_string(pr.precision) + " bits for '" + pr.body + "'";
+        if (!bits.empty()) positive += bits + ")";
+      }
       auto t3 = Clock::now();
       auto unresolved = [&](Box_class kind, const std::string& reason, const std::vector<std::pair<double, double>>& box, std::size_t boxes,
                             const Configuration& at) {

@@ -85,10 +85,7 @@ if(TARGET rigid_incidence)
   points_coincident_plain_number "'c2'&&'D'&&'E'&&coincide"
   distance_unknown_label "distances.0.&&'Z'"
   distance_squared_negative "distances.0.&&squared&&positive"
-  distance_squared_zero "distances.0.&&squared&&positive"
-  distance_squared_zero_rational "distances.0.&&squared&&positive"
   distance_length_negative "distances.0.&&length&&positive"
-  distance_length_zero "distances.0.&&length&&positive"
   distance_nan "distances.0.&&squared&&NaN"
   distance_infinite "distances.0.&&length&&infinite"
   distance_non_numeric "distances.0.&&squared"
@@ -137,6 +134,23 @@ if(TARGET rigid_incidence)
     add_test(NAME cli_no_configuration_${_case}
              COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${_ri_malformed_dir}/${_case}.json" -DEXPECT_RC=0
                      "-DEXPECT_STDOUT=${_rx}" -P ${_ri_cli_script})
+  endforeach()
+  # a distance of 0 is a coincidence: its two labels name one point (issue 27, item 5)
+  set(_ri_coincidence_dir ${CMAKE_CURRENT_LIST_DIR}/../data/coincidence)
+  foreach(_case distance_squared_zero distance_squared_zero_rational distance_length_zero)
+    add_test(NAME cli_coincidence_${_case}
+             COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=analyze|${_ri_coincidence_dir}/${_case}.json" -DEXPECT_RC=0
+                     "-DEXPECT_STDOUT='D' and 'B' are one point, 'B' \\(distances.0. \\('B'-'D'\\) is 0\\)" -P ${_ri_cli_script})
+  endforeach()
+  set(_ri_coincidence_solve_table
+    coincidence_hinge "'K1' and 'H1' are one point&&'K2' and 'H2' are one point&&2 configuration\\(s\\), all certified: complete&&K1 = &&K2 = "
+    coincidence_apart "no real configuration&&body 'A' holds 'R'&&'P'&&0 configuration\\(s\\), all certified: complete")
+  foreach(_i RANGE 0 2 2)
+    math(EXPR _j "${_i} + 1")
+    list(GET _ri_coincidence_solve_table ${_i} _case)
+    list(GET _ri_coincidence_solve_table ${_j} _rx)
+    add_test(NAME cli_${_case} COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${_ri_coincidence_dir}/${_case}.json" -DEXPECT_RC=0
+             "-DEXPECT_STDOUT=${_rx}" -P ${_ri_cli_script})
   endforeach()
   # every file of the directory must be in a table: a file without a line gets a failing test
   file(GLOB _files RELATIVE ${_ri_malformed_dir} ${_ri_malformed_dir}/*.json)

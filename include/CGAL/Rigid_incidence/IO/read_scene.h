@@ -14,7 +14,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include <array>
 #include <fstream>
+#include <functional>
+#include <map>
 #include <istream>
 #include <iterator>
 #include <memory>
@@ -237,10 +240,10 @@ public:
         if (!sq && !len) fail(where, "missing \"squared\" or \"length\"");
         if (sq) {
           dist.squared = number(*sq, where + ".squared");
-          if (dist.squared <= 0) fail(where + ".squared", "a distance must be positive");
+          if (dist.squared < 0) fail(where + ".squared", "a distance must be positive, or 0 (a coincidence)");
         } else {
           dist.length = number(*len, where + ".length");
-          if (dist.length <= 0) fail(where + ".length", "a distance must be positive");
+          if (dist.length < 0) fail(where + ".length", "a distance must be positive, or 0 (a coincidence)");
           dist.given_as_length = true;
           dist.squared = dist.length * dist.length;
         }
@@ -384,6 +387,13 @@ inline Scene read_scene(const std::string& filename)
 \brief Builds a `Rigid_body_collection` from a scene, converting each exact number to
 `Traits::FT` (exactly when `FT` is an exact field, else to the nearest double, within the range of Rigid_incidence_traits::from_rational()).
 
+A distance of 0 is a coincidence: its two labels name one point. Every label is replaced by
+the first label of its class (in the order of the bodies) and the others become aliases of it
+(`Rigid_body_collection::aliases()`, given back in every configuration). A body holding two
+labels of one class at different places, or a nonzero distance between two of them, leaves
+no real configuration (`No_real_configuration`); two labels of one class in one body at the
+same place are one point.
+
 \throws Input_error for geometric faults, named with the scene's source: coincident points
 inside a body, a distance naming an unknown point, two distances on one pair that disagree.
 */
@@ -393,21 +403,70 @@ Rigid_body_collection<Traits> make_collection(const Scene& scene)
   Rigid_body_collection<Traits> c;
   c.name = scene.name;
   try {
+    // coincidences: the classes of labels joined by distances of 0
+    std::map<std::string, std::string> parent;
+    std::function<std::string(const std::string&)> find = [&](const std::string& l) -> std::string {
+      auto it = parent.find(l);
+      if (it == parent.end() || it->second == l) return l;
+      return it->second = find(it->second);
+    };
+    std::map<std::string, std::size_t> first_seen;  // the representative: the label seen first
+    for (const auto& b : scene.bodies)
+      for (const auto& p : b.points) first_seen.emplace(p.label, first_seen.size());
+    for (std::size_t i = 0; i < scene.distances.size(); ++i) {
+      const auto& d = scene.distances[i];
+      if (d.squared != 0) continue;
+      std::string a = find(d.a), b = find(d.b);
+      if (a == b) continue;
+      auto rank = [&](const std::string& l) { auto it = first_seen.find(l); return it == first_seen.end() ? first_seen.size() : it->second; };
+      if (rank(b) < rank(a)) std::swap(a, b);
+      parent[b] = a;
+      parent.emplace(a, a);
+    }
+    std::map<std::string, std::string> why;  // per class: the distances of 0 that make it
+    for (std::size_t i = 0; i < scene.distances.size(); ++i) {
+      const auto& d = scene.distances[i];
+      if (d.squared != 0) continue;
+      std::string& w = why[find(d.a)];
+      w += (w.empty() ? "" : ", ") + ("distances[" + std::to_string(i) + "] ('" + d.a + "'-'" + d.b + "') is 0");
+    }
+    auto rep = [&](const std::string& l) { return find(l); };
     for (const auto& b : scene.bodies) {
       std::vector<std::pair<std::string, typename Traits::Point_3>> pts;
+      std::vector<std::array<Gmpq, 3>> exact;
       for (const auto& p : b.points) {
         const std::string where = "body '" + b.name + "': point '" + p.label + "': coordinate ";
-        pts.emplace_back(p.label, Traits::point(Traits::from_rational(p.x, where + "x"), Traits::from_rational(p.y, where + "y"),
-                                                Traits::from_rational(p.z, where + "z")));
+        const std::string l = rep(p.label);
+        bool again = false;
+        for (std::size_t k = 0; k < pts.size(); ++k)
+          if (pts[k].first == l) {
+            if (!(exact[k][0] == p.x && exact[k][1] == p.y && exact[k][2] == p.z))
+              throw No_real_configuration("body '" + b.name + "' holds '" + p.label + "' and another label of the same point ('" + l +
+                                          "', made one by a distance of 0) at different places: no real configuration");
+            again = true;
+          }
+        if (again) continue;
+        pts.emplace_back(l, Traits::point(Traits::from_rational(p.x, where + "x"), Traits::from_rational(p.y, where + "y"),
+                                          Traits::from_rational(p.z, where + "z")));
+        exact.push_back({p.x, p.y, p.z});
       }
       c.add_body(b.name, pts);
     }
     for (std::size_t i = 0; i < scene.distances.size(); ++i) {
       const auto& d = scene.distances[i];
       const std::string where = "distances[" + std::to_string(i) + "] ('" + d.a + "'-'" + d.b + "')";
-      c.add_distance(d.a, d.b, Traits::from_rational(d.squared, where + ": squared value"), where);
+      if (d.squared == 0) continue;
+      const std::string a = rep(d.a), b = rep(d.b);
+      if (a == b)
+        throw No_real_configuration(where + ": joins two labels of one point (made one by a distance of 0) at a nonzero distance:"
+                                    " no real configuration");
+      c.add_distance(a, b, Traits::from_rational(d.squared, where + ": squared value"), where);
     }
+    for (const auto& l : parent)
+      if (find(l.first) != l.first) c.add_alias(l.first, find(l.first), why[find(l.first)]);
     if (!scene.frame.empty()) c.set_frame(scene.frame);
+  } catch (const No_real_configuration& e) {
+    throw No_real_configuration(scene.source + ": " + e.what());
   } catch (const Input_error& e) {
     throw Input_error(scene.source + ": " + e.what());
   }
