@@ -210,7 +210,20 @@ public:
         P.inconsistent = "body '" + b_.name + "', through its part '" + part.name + "': " + pp.inconsistent;
     }
     std::vector<bool> used(P.parts.size(), false);
-    if (given >= 3) { std::vector<bool> trial_used = used; P.in_given_frame = order(placed, trial_used, nullptr); }
+    // the given coordinates fix a frame only if three of them are off a line (exactly)
+    bool given_spans = false;
+    {
+      std::vector<std::size_t> g;
+      for (std::size_t i = 0; i < m; ++i) if (P.given[i]) g.push_back(i);
+      for (std::size_t a = 2; a < g.size() && !given_spans; ++a) {
+        const auto &X = *P.given[g[0]], &Y = *P.given[g[1]], &Z = *P.given[g[a]];
+        Q u[3], v[3];
+        for (int k = 0; k < 3; ++k) { u[k] = Y[k] - X[k]; v[k] = Z[k] - X[k]; }
+        given_spans = CGAL::sign(u[1] * v[2] - u[2] * v[1]) != CGAL::ZERO || CGAL::sign(u[2] * v[0] - u[0] * v[2]) != CGAL::ZERO ||
+                      CGAL::sign(u[0] * v[1] - u[1] * v[0]) != CGAL::ZERO;
+      }
+    }
+    if (given_spans) { std::vector<bool> trial_used = used; P.in_given_frame = order(placed, trial_used, nullptr); }
     if (!P.in_given_frame) {
       // canonical frame; the given coordinates keep their handedness through an orientation
       extra_orientations();
@@ -264,18 +277,8 @@ public:
         used[P.start_part] = true;
       }
     }
-    if (!P.in_given_frame && given >= 3) {
-      // the given coordinates cannot start the placement, but the result is still in their frame
-      std::vector<std::size_t> g;
-      for (std::size_t i = 0; i < m; ++i) if (P.given[i]) g.push_back(i);
-      for (std::size_t a = 2; a < g.size() && !P.map_to_given; ++a) {
-        const auto &X = *P.given[g[0]], &Y = *P.given[g[1]], &Z = *P.given[g[a]];
-        Q u[3], v[3];
-        for (int k = 0; k < 3; ++k) { u[k] = Y[k] - X[k]; v[k] = Z[k] - X[k]; }
-        P.map_to_given = CGAL::sign(u[1] * v[2] - u[2] * v[1]) != CGAL::ZERO || CGAL::sign(u[2] * v[0] - u[0] * v[2]) != CGAL::ZERO ||
-                         CGAL::sign(u[0] * v[1] - u[1] * v[0]) != CGAL::ZERO;
-      }
-    }
+    // the given coordinates cannot start the placement, but the result is still in their frame
+    P.map_to_given = !P.in_given_frame && given_spans;
     order(placed, used, &P.steps);
     // the parts that placed nothing are checks: each must fit the placed points
     for (std::size_t j = 0; j < P.parts.size(); ++j)
@@ -466,7 +469,7 @@ public:
     for (std::size_t j = 0; j < Pl.parts.size(); ++j) {
       Placement_enumerator<W> e(Pl.parts[j], max_);
       part_placements_.push_back(e.run());
-      if (e.truncated()) truncated_ = true;
+      if (e.truncated()) part_truncated_ = true;  // the body is incomplete, but its list goes on
       if (!e.undecided().empty()) note_undecided(false, "its part '" + Pl.parts[j].name + "': " + e.undecided());
     }
     for (const auto& s : Pl.steps) {
@@ -534,15 +537,20 @@ public:
         const P d = sub(e.coordinates[two[0]], e.coordinates[two[1]]);
         const W L2 = dot(d, d);
         bool again = false;
-        for (const W& l : lengths) if (internal::overlap(l, L2)) again = true;
+        for (const W& l : lengths)
+          if (internal::overlap(l, L2)) {
+            if (narrow_enough(l, 2) && narrow_enough(L2, 2)) again = true;
+            else note_undecided(false, "two lengths of '" + Pl.labels[A] + "'-'" + Pl.labels[B] + "' that its part gives are not separated");
+          }
         if (again) continue;
         lengths.push_back(L2);
         const W L = CGAL::sqrt(L2), rA = from_rational(*Pl.known[C][A]), rB = from_rational(*Pl.known[C][B]);
         const W x = (L2 + rA - rB) / (W(2) * L), y2 = rA - x * x;
-        if (negative(y2)) continue;
         bool here_undecided = false;
         W y = W(0);
-        if (positive(y2)) y = CGAL::sqrt(y2);
+        if (within_slack_of_zero(y2)) y = W(0);  // rounded input: on the line
+        else if (negative(y2)) continue;
+        else if (positive(y2)) y = CGAL::sqrt(y2);
         else {
           y = typename CGAL::Interval_traits<W>::Hull()(W(0), CGAL::sqrt(W(Upper()(y2))));
           here_undecided = true;
@@ -571,7 +579,7 @@ public:
     return out_;
   }
 
-  bool truncated() const { return truncated_; }
+  bool truncated() const { return truncated_ || part_truncated_; }
   /// nonempty: some placements could not be decided in this precision, and which
   std::string undecided() const
   {
@@ -581,7 +589,7 @@ public:
 private:
   const Placement_plan& plan_;
   std::size_t max_;
-  bool truncated_ = false;
+  bool truncated_ = false, part_truncated_ = false;
   std::string undecided_;
   std::size_t undecided_count_ = 0;
   std::vector<W> a_, b_, t_;
@@ -601,6 +609,20 @@ private:
   static bool all_placed(const std::array<std::size_t, 4>& q, const std::vector<bool>& placed)
   { return placed[q[0]] && placed[q[1]] && placed[q[2]] && placed[q[3]]; }
   static bool positive(const W& x) { return Lower()(x) > 0; }
+  // An enclosure narrow enough (2^-40 of the body's size, or of its square) to call two that
+  // meet one value.
+  bool narrow_enough(const W& x, int power = 1) const
+  {
+    const double w = CGAL::to_double(Upper()(x)) - CGAL::to_double(Lower()(x));
+    return w <= std::ldexp(1.0, -40) * (power == 1 ? plan_.scale : plan_.scale * plan_.scale);
+  }
+  // With rounded input: a squared length within the slack of 0 counts as 0.
+  bool within_slack_of_zero(const W& x) const
+  {
+    if (plan_.slack == 0) return false;
+    const double e = plan_.slack * plan_.scale * plan_.scale;
+    return CGAL::to_double(Lower()(x)) >= -e && CGAL::to_double(Upper()(x)) <= e;
+  }
   // Do two enclosures meet, within the slack of rounded input (a length, or a squared one)?
   bool meet(const W& a, const W& b, int power) const
   {
@@ -671,7 +693,7 @@ private:
       // farthest from a line carry the motion; the given points keep their exact values)
       std::vector<std::size_t> g;
       for (std::size_t i = 0; i < plan_.m; ++i) if (plan_.given[i]) g.push_back(i);
-      std::array<std::size_t, 3> r;
+      std::array<std::size_t, 3> r{{0, 0, 0}};
       if (!widest_triangle(x_, g, r)) {
         note_undecided(true, "its points with coordinates are not certainly off a line in a placement");
         return;
@@ -739,9 +761,10 @@ private:
       const W alpha = (r1 - r2 + uu) / W(2), beta = (r1 - r3 + vv) / W(2);
       a = (alpha * vv - beta * uv) / G;
       b = (beta * uu - alpha * uv) / G;
-      const W S = (r1 - (a * a * uu + W(2) * a * b * uv + b * b * vv)) / G;
-      if (negative(S)) return;  // no real point on this branch
-      if (positive(S)) { t = CGAL::sqrt(S); two_sides = true; }
+      const W H2 = r1 - (a * a * uu + W(2) * a * b * uv + b * b * vv), S = H2 / G;
+      if (within_slack_of_zero(H2)) { t = W(0); two_sides = false; }  // rounded input: on the plane
+      else if (negative(S)) return;  // no real point on this branch
+      else if (positive(S)) { t = CGAL::sqrt(S); two_sides = true; }
       else {
         // s not separated from 0: one placement enclosing both sides (and the double point)
         const W top = CGAL::sqrt(W(Upper()(S)));
@@ -782,7 +805,7 @@ private:
       const auto& y = e.coordinates;
       std::vector<P> image(map.size());
       if (on.size() >= 3) {
-        std::array<std::size_t, 3> r;
+        std::array<std::size_t, 3> r{{0, 0, 0}};
         if (!widest_triangle(y, on, r)) {
           note_undecided(true, "the points it shares with its part '" + plan_.parts[s.part].name + "' are not certainly off a line");
           continue;
@@ -817,7 +840,14 @@ private:
         bool same = true;
         for (std::size_t i = 0; i < mine.size() && same; ++i)
           for (std::size_t c = 0; c < 3 && same; ++c) same = internal::overlap(mine[i][c], other[i][c]);
-        if (same) { again = true; break; }
+        if (!same) continue;
+        // overlapping enclosures are one placement only when they are narrow; else the
+        // precision is raised (until then both are kept)
+        bool narrow = true;
+        for (std::size_t i = 0; i < mine.size() && narrow; ++i)
+          for (std::size_t c = 0; c < 3 && narrow; ++c) narrow = narrow_enough(mine[i][c]) && narrow_enough(other[i][c]);
+        if (narrow) { again = true; break; }
+        note_undecided(false, "two placements of its part '" + plan_.parts[s.part].name + "' are not separated");
       }
       if (again) continue;
       seen.push_back(mine);
@@ -1060,7 +1090,8 @@ type `IT`: the `placements` of `enumerate_placements()`, which says how they are
 \param body the index of the body in `c`
 \param max_placements the most placements the caller accepts
 \throws Input_error if the body's distances do not let its points be placed one after the
-other, or if it has more than `max_placements` placements (never a silently shortened list).
+other, if it has more than `max_placements` placements, or if some were left undecided
+(`Placement_enumeration::undecided`): never a silently shortened list.
 */
 template <class IT, class Traits>
 std::vector<Body_enclosure<IT>> enclose_all_placements(const Rigid_body_collection<Traits>& c, std::size_t body,
@@ -1069,6 +1100,8 @@ std::vector<Body_enclosure<IT>> enclose_all_placements(const Rigid_body_collecti
   auto e = internal::cached_placements<IT>(c, body, max_placements);
   if (!e->complete)
     throw Input_error("body '" + c.body(body).name + "' has more than " + std::to_string(max_placements) + " placements");
+  if (!e->undecided.empty())
+    throw Input_error("the placements of body '" + c.body(body).name + "' are not all decided: " + e->undecided);
   return e->placements;
 }
 

@@ -517,6 +517,10 @@ Scene_solve_result solve_scene(const Rigid_body_collection<Traits>& original, co
     if (!r.inconsistent.empty() && out.no_configuration.empty()) out.no_configuration = r.inconsistent;
     if (!r.undecided.empty()) out.limits.push_back("placements of body '" + r.body + "' not decided: " + r.undecided);
   }
+  // a covering body all of whose placements were left undecided: nothing to solve, and the
+  // result is incomplete (its limit says why), not "no configuration"
+  for (const auto& r : out.placements)
+    if (r.placements == 0 && !r.undecided.empty() && r.inconsistent.empty()) return out;
   // bodies outside the covering set known by distances with more than one placement: the
   // reduced system fixes their covered points (by exact distances), and each placement that
   // fits them is a configuration of its own (its other points differ), not placement 0 alone
@@ -615,7 +619,12 @@ Scene_solve_result solve_scene(const Rigid_body_collection<Traits>& original, co
                   const auto& d = e.coordinates[c.body(b).local(common[w])];
                   return internal::dot(internal::sub(a, d), internal::sub(a, d));
                 };
-                if (!internal::overlap(sq(ei[vi], i), sq(ej[vj], j))) { sp.fits[vi][vj] = false; any = true; }
+                CGAL::Interval_nt<false> a = sq(ei[vi], i), b = sq(ej[vj], j);
+                if (!Traits::has_exact_ft) {  // rounded input: a mismatch within 1e-9 of the length is no mismatch
+                  const double e = 1e-9 * (std::max)(std::abs(a.sup()), std::abs(b.sup()));
+                  a += CGAL::Interval_nt<false>(-e, e);
+                }
+                if (!internal::overlap(a, b)) { sp.fits[vi][vj] = false; any = true; }
               }
         if (any) shared_pairs.push_back(std::move(sp));
       }

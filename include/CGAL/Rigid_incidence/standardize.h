@@ -10,6 +10,7 @@
 #define CGAL_RIGID_INCIDENCE_STANDARDIZE_H
 
 #include <CGAL/Rigid_incidence/Rigid_body_collection.h>
+#include <CGAL/Rigid_incidence/enclose_coordinates.h>
 #include <CGAL/Rigid_incidence/internal/cayley_menger.h>
 
 #include <boost/graph/adjacency_list.hpp>
@@ -348,9 +349,11 @@ private:
     return m;
   }
 
-  static void add_part(Body& m, const Body& part)
+  // (a part once: by content, since a body keeps its name when it absorbs another)
+  void add_part(Body& m, const Body& part) const
   {
-    for (const Body& x : m.parts) if (x.name == part.name) return;
+    const std::string key = placement_key(c_, part);
+    for (const Body& x : m.parts) if (placement_key(c_, x) == key) return;
     m.parts.push_back(part);
   }
 

@@ -416,9 +416,12 @@ Rigid_body_collection<Traits> make_collection(const Scene& scene)
     for (std::size_t i = 0; i < scene.distances.size(); ++i) {
       const auto& d = scene.distances[i];
       if (d.squared != 0) continue;
+      for (const std::string& l : {d.a, d.b})
+        if (!first_seen.count(l))
+          throw Input_error("distances[" + std::to_string(i) + "] ('" + d.a + "'-'" + d.b + "'): names unknown point '" + l + "'");
       std::string a = find(d.a), b = find(d.b);
       if (a == b) continue;
-      auto rank = [&](const std::string& l) { auto it = first_seen.find(l); return it == first_seen.end() ? first_seen.size() : it->second; };
+      auto rank = [&](const std::string& l) { return first_seen.at(l); };
       if (rank(b) < rank(a)) std::swap(a, b);
       parent[b] = a;
       parent.emplace(a, a);
