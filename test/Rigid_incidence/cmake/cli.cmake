@@ -14,6 +14,23 @@
 # The files of data/malformed/ are written by `test_read_scene --write-malformed DIR`, which
 # prints this table.
 
+# One test per (case, regex) pair of the list named `table`: `COMMAND DIR/case.json` exits
+# with RC and its STREAM (STDOUT or STDERR) matches PREFIX (where @CASE@ is the case) and the regex.
+function(_ri_table prefix command dir rc stream rx_prefix table)
+  set(_t ${${table}})
+  list(LENGTH _t _n)
+  math(EXPR _last "${_n} - 1")
+  foreach(_i RANGE 0 ${_last} 2)
+    math(EXPR _j "${_i} + 1")
+    list(GET _t ${_i} _case)
+    list(GET _t ${_j} _rx)
+    string(REPLACE "@CASE@" "${_case}" _p "${rx_prefix}")
+    # a missing file fails its test ("cannot open")
+    add_test(NAME ${prefix}${_case} COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=${command}|${dir}/${_case}.json"
+             -DEXPECT_RC=${rc} "-DEXPECT_${stream}=${_p}${_rx}" -P ${_ri_cli_script})
+  endforeach()
+endfunction()
+
 if(TARGET rigid_incidence)
   set(_ri_cli_script ${CMAKE_CURRENT_LIST_DIR}/../cli/run_cli.cmake)
   set(_ri_malformed_dir ${CMAKE_CURRENT_LIST_DIR}/../data/malformed)
@@ -108,33 +125,14 @@ if(TARGET rigid_incidence)
   implied_triangle_degenerate "'A'&&'B'&&'C'"
   )
 
-  list(LENGTH _ri_malformed_table _n)
-  math(EXPR _last "${_n} - 1")
-  foreach(_i RANGE 0 ${_last} 2)
-    math(EXPR _j "${_i} + 1")
-    list(GET _ri_malformed_table ${_i} _case)
-    list(GET _ri_malformed_table ${_j} _rx)
-    set(_file ${_ri_malformed_dir}/${_case}.json) # a missing file fails its test ("cannot open")
-    add_test(NAME cli_malformed_${_case}
-             COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=analyze|${_file}" -DEXPECT_RC=2
-                     "-DEXPECT_STDERR=^rigid_incidence: error: [^\n]*${_case}\\.json: &&${_rx}" -P ${_ri_cli_script})
-  endforeach()
+  _ri_table(cli_malformed_ analyze ${_ri_malformed_dir} 2 STDERR "^rigid_incidence: error: [^\n]*@CASE@\\.json: &&" _ri_malformed_table)
   # well formed, but without a real configuration (decided exactly): `solve` answers
   # "0 configurations, complete" with exit status 0 and names the points and distances
   # (issue 27, item 5; these files are written with the malformed ones)
   set(_ri_no_configuration_table
   implied_triangle_inequality "no real configuration&&'A'&&'B'&&'C'&&triangle inequality&&0 configuration\\(s\\), all certified: complete"
   )
-  list(LENGTH _ri_no_configuration_table _n)
-  math(EXPR _last "${_n} - 1")
-  foreach(_i RANGE 0 ${_last} 2)
-    math(EXPR _j "${_i} + 1")
-    list(GET _ri_no_configuration_table ${_i} _case)
-    list(GET _ri_no_configuration_table ${_j} _rx)
-    add_test(NAME cli_no_configuration_${_case}
-             COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${_ri_malformed_dir}/${_case}.json" -DEXPECT_RC=0
-                     "-DEXPECT_STDOUT=${_rx}" -P ${_ri_cli_script})
-  endforeach()
+  _ri_table(cli_no_configuration_ solve ${_ri_malformed_dir} 0 STDOUT "" _ri_no_configuration_table)
   # a distance of 0 is a coincidence: its two labels name one point (issue 27, item 5)
   set(_ri_coincidence_dir ${CMAKE_CURRENT_LIST_DIR}/../data/coincidence)
   foreach(_case distance_squared_zero distance_squared_zero_rational distance_length_zero)
@@ -145,13 +143,7 @@ if(TARGET rigid_incidence)
   set(_ri_coincidence_solve_table
     coincidence_hinge "'K1' and 'H1' are one point&&'K2' and 'H2' are one point&&2 configuration\\(s\\), all certified: complete&&K1 = &&K2 = "
     coincidence_apart "no real configuration&&body 'A' holds 'R'&&'P'&&0 configuration\\(s\\), all certified: complete")
-  foreach(_i RANGE 0 2 2)
-    math(EXPR _j "${_i} + 1")
-    list(GET _ri_coincidence_solve_table ${_i} _case)
-    list(GET _ri_coincidence_solve_table ${_j} _rx)
-    add_test(NAME cli_${_case} COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${_ri_coincidence_dir}/${_case}.json" -DEXPECT_RC=0
-             "-DEXPECT_STDOUT=${_rx}" -P ${_ri_cli_script})
-  endforeach()
+  _ri_table(cli_ solve ${_ri_coincidence_dir} 0 STDOUT "" _ri_coincidence_solve_table)
   # every file of the directory must be in a table: a file without a line gets a failing test
   file(GLOB _files RELATIVE ${_ri_malformed_dir} ${_ri_malformed_dir}/*.json)
   foreach(_f ${_files})
