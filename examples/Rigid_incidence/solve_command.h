@@ -45,21 +45,26 @@ inline double parse_positive(const std::string& opt, const std::string& v)
   return x;
 }
 
-// The power of two nearest the size of a scene: its largest coordinate or distance (0 for an
-// empty scene).
+// The power of two nearest the size of a scene: the largest coordinate of a point of two or
+// more bodies or of a distance, or distance (0 for an empty scene); as solve_scene() measures
+// a collection (a frame point at 1e308 alone does not make the scene's hinges tiny).
 inline long scene_size_exponent(const RI::Scene& scene)
 {
-  auto e = [](const CGAL::Gmpq& q) { return RI::internal::binary_exponent(q); };
+  std::map<std::string, int> uses;
+  for (const auto& b : scene.bodies)
+    for (const auto& p : b.points) ++uses[p.label];
+  for (const auto& d : scene.distances) { uses[d.a] += 2; uses[d.b] += 2; }
   bool any = false;
   long hi = 0;
   auto see = [&](const CGAL::Gmpq& q, long div) {
     if (q == 0) return;
-    long x = e(q) / div;
+    long x = RI::internal::binary_exponent(q) / div;
     hi = any ? (std::max)(hi, x) : x;
     any = true;
   };
   for (const auto& b : scene.bodies)
-    for (const auto& p : b.points) { see(p.x, 1); see(p.y, 1); see(p.z, 1); }
+    for (const auto& p : b.points)
+      if (uses[p.label] >= 2) { see(p.x, 1); see(p.y, 1); see(p.z, 1); }
   for (const auto& d : scene.distances) see(d.squared, 2);
   return hi;
 }
@@ -80,30 +85,6 @@ inline RI::Scene scaled_scene(RI::Scene s, long e)
   s.free_distance.hi *= f;
   s.free_distance.nominal_squared *= f * f;
   return s;
-}
-
-// A configuration of the scaled scene at the scene's own scale (2^k times).
-inline void unscale(RI::Configuration& c, long k)
-{
-  for (auto& p : c.points) for (double& x : p) x = std::ldexp(x, int(k));
-  for (auto& m : c.poses) for (double& x : m.t) x = std::ldexp(x, int(k));
-}
-inline void unscale(RI::Residual_report& r, long k)
-{
-  for (auto& e : r.entries)
-    if (e.kind == RI::Residual::DISTANCE) e.value = std::ldexp(e.value, int(2 * k));
-    else if (e.kind == RI::Residual::INCIDENCE || e.kind == RI::Residual::BODY) e.value = std::ldexp(e.value, int(k));
-  r.max_incidence = std::ldexp(r.max_incidence, int(k));
-  r.max_distance = std::ldexp(r.max_distance, int(2 * k));
-}
-
-// The residual relative to the scene's size: incidences and body fits divided by it, squared
-// distances by its square (0.035 at 10^6 is a residual of 3.5e-14).
-inline double relative_residual(const RI::Scene_configuration& x)
-{
-  const double size = RI::internal::configuration_size(x.configuration);
-  if (!x.residuals.complete || x.residuals.mirrored) return std::numeric_limits<double>::infinity();
-  return (std::max)(x.residuals.max_incidence / size, x.residuals.max_distance / (size * size));
 }
 
 // The pose of every body of the scene file (each has coordinates): the best rigid fit of its
@@ -407,18 +388,9 @@ int solve(const RI::Scene& scene, const RI::Rigid_body_collection<Traits>& input
     throw RI::Input_error("--precision above 53 bits needs MPFI (Debian libmpfi-dev); this build has none");
 #endif
   }
-  if (o.scale_exponent != 0) {
-    const long k = o.scale_exponent;
-    for (auto& x : r.configurations) {
-      unscale(x.configuration, k);
-      unscale(x.residuals, k);
-      x.max_residual = x.residuals.max();
-    }
-    for (auto& u : r.unresolved) unscale(u.at_centre, k);
-    // (a curve's max_residual mixes lengths and squared lengths: it stays at unit size)
-    for (auto& c : r.curves)
-      for (auto& f : c.configurations) unscale(f, k);
-  }
+  // the tool scaled the scene before reading it into the kernel (a double kernel could not
+  // hold it); solve_scene() scales what it is given by itself
+  if (o.scale_exponent != 0) RI::internal::scale_result(r, o.scale_exponent);  // (a curve's max_residual stays at unit size)
   if (!o.near.empty()) {
     auto ref = read_near(o.near);
     std::stable_sort(r.configurations.begin(), r.configurations.end(), [&](const RI::Scene_configuration& a, const RI::Scene_configuration& b) {
@@ -444,7 +416,7 @@ int solve(const RI::Scene& scene, const RI::Rigid_body_collection<Traits>& input
     j["reduced_system"] = {{"variables", vars}, {"equations", r.equations}};
     j["complete"] = r.complete();
     j["certified"] = !r.fast;
-    j["scale_exponent"] = o.scale_exponent;
+    j["scale_exponent"] = r.scale_exponent;
     j["diagnosis"] = r.diagnosis.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(r.diagnosis);
     j["no_configuration"] = r.no_configuration.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(r.no_configuration);
     j["limits"] = r.limits;
@@ -483,7 +455,7 @@ int solve(const RI::Scene& scene, const RI::Rigid_body_collection<Traits>& input
       sj["bodies"] = bodies;
       sj["points"] = points_json(x.configuration);
       sj["max_residual"] = x.max_residual;
-      sj["max_relative_residual"] = relative_residual(x);
+      sj["max_relative_residual"] = x.max_relative_residual;
       sols.push_back(sj);
     }
     j["solutions"] = sols;
@@ -540,8 +512,8 @@ int solve(const RI::Scene& scene, const RI::Rigid_body_collection<Traits>& input
             << st.chart_combinations << " chart combination(s) solved" << (r.fast ? " in the FAST, NON-CERTIFIED mode" : "") << "\n";
   for (const auto& a : input.aliases())
     std::cout << "'" << a.alias << "' and '" << a.label << "' are one point, '" << a.label << "' (" << a.why << ")\n";
-  if (o.scale_exponent != 0)
-    std::cout << "the scene's size is about 2^" << o.scale_exponent << ": solved scaled by 2^" << -o.scale_exponent
+  if (r.scale_exponent != 0)
+    std::cout << "the scene's size is about 2^" << r.scale_exponent << ": solved scaled by 2^" << -r.scale_exponent
               << " (exactly), its configurations given back at the scene's own scale\n";
   if (!r.diagnosis.empty()) std::cout << "diagnosis: " << r.diagnosis << "\n";
   if (!r.no_configuration.empty()) std::cout << "no real configuration: " << r.no_configuration << "\n";
@@ -561,7 +533,7 @@ int solve(const RI::Scene& scene, const RI::Rigid_body_collection<Traits>& input
     std::cout << "\nconfiguration " << ++k << ": " << (x.certified ? "certified" : "NOT certified")
               << (x.on_inequality_boundary ? " (on an inequality's boundary)" : "")
               << (x.singular ? ", SINGULAR (a double configuration: " + x.singular_reason + ")" : "") << ", max residual "
-              << std::setprecision(3) << x.max_residual << " (relative to the scene's size " << relative_residual(x) << ")"
+              << std::setprecision(3) << x.max_residual << " (relative to the scene's size " << x.max_relative_residual << ")"
               << std::setprecision(10) << " in the original system\n  parameters:";
     for (std::size_t i = 0; i < x.variables.size(); ++i)
       std::cout << " " << x.variables[i] << " in [" << x.parameters[i].first << ", " << x.parameters[i].second << "]";

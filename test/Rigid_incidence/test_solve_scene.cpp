@@ -726,7 +726,7 @@ static void establish_originals()
 // q = (L a, b u) with L the power of two nearest |u|.)
 static void case_scaled()
 {
-  print_case("1. scaled scenes (x 1e-6, x 1e6; sanity: x 1/10, x 10)");
+  print_case("1. scaled scenes (x 1e-6, x 1e6, x 1e+-55, x 1e+-100; sanity: x 1/10, x 10; a frame point at 1e308)");
   auto t0 = std::chrono::steady_clock::now();
   struct S { const char* scene; Q factor; const char* tag; bool works; };
   const std::vector<S> cases = {
@@ -734,7 +734,10 @@ static void case_scaled()
     {"tetra", pow10(-6), "1e-6", true}, {"tetra", pow10(6), "1e6", true},
     {"pent", pow10(-6), "1e-6", true}, {"pent", pow10(6), "1e6", true},
     {"quad_distinct", pow10(-6), "1e-6", true}, {"quad_distinct", pow10(6), "1e6", true},
-    {"tetra_i", pow10(-6), "1e-6", true}, {"tetra_i", pow10(6), "1e6", true}};
+    {"tetra_i", pow10(-6), "1e-6", true}, {"tetra_i", pow10(6), "1e6", true},
+    // far from unit size: solve_scene() scales the collection itself (issue 27, item 6)
+    {"tetra", pow10(55), "1e55", true}, {"tetra", pow10(-55), "1e-55", true},
+    {"pent", pow10(100), "1e100", true}, {"quad_distinct", pow10(-100), "1e-100", true}};
   for (const auto& c : cases) {
     const Run& o = originals[c.scene];
     RI::Scene s = through_json(scaled(o.scene, c.factor, std::string(c.scene) + " x " + c.tag));
@@ -764,6 +767,42 @@ static void case_scaled()
       std::cout << "    (" << t.name << " now passes: move it out of the known failures)\n";
     // never complete with fewer configurations than the original
     CHECK(!(t.r.complete() && t.r.configurations.size() < o.r.configurations.size()), t.name << ": complete() but roots are missing");
+    // the scale the library solved at, and the residuals relative to the scene's size
+    const long e = long(std::lround(std::log2(std::abs(f))));
+    if (std::abs(e) > 100 || std::abs(e) < 10)
+      CHECK((std::abs(e) > 100) == (t.r.scale_exponent != 0), t.name << ": scale_exponent " << t.r.scale_exponent << " for a scene scaled by 2^" << e);
+    for (const auto& x : t.r.configurations)
+      CHECK(x.max_relative_residual <= 1e-12, t.name << ": max_relative_residual " << x.max_relative_residual);
+  }
+  // A frame point far from the rest (1e308, and 1e-300) does not make the hinge tiny: the
+  // same 2 configurations, certified, complete, the far point where its body puts it.
+  for (int far : {308, -300}) {
+    Planted p = planted_hinge("hinge with a frame point at 1e" + std::to_string(far), Q(1), Q(1, 2));
+    const Q fx = pow10(far);
+    p.scene.bodies[0].points.push_back(spoint("F", qpt(fx, 0, 0)));
+    Run t = solve(through_json(p.scene));
+    // (not check_honest(): its oracle measures errors relative to the whole configuration,
+    // 1e308 here; the hinge is checked on its own points below)
+    std::size_t count = 0;
+    find_planted(t, p.solution, 1e-9, count);
+    for (const auto& x : t.r.configurations) {  // Y at its distances from H1, H2 (body B) and X
+      Points a = points_of(x.configuration);
+      const double e = std::max({std::abs(d2(a["Y"], a["H1"]) - d2(p.solution["Y"], p.solution["H1"])),
+                                 std::abs(d2(a["Y"], a["H2"]) - d2(p.solution["Y"], p.solution["H2"])),
+                                 std::abs(d2(a["Y"], a["X"]) - d2(p.solution["Y"], p.solution["X"])),
+                                 std::abs(d2(a["H2"], p.solution["H2"])), std::abs(d2(a["X"], p.solution["X"]))});
+      CHECK(e <= 1e-12, t.name << ": a configuration is off the hinge's constraints by " << e);
+    }
+    CHECK(t.error.empty() && t.r.complete() && t.r.configurations.size() == 2 && certified(t) == 2,
+          t.name << ": " << summary(t) << " (2 certified configurations, complete, expected)");
+    CHECK(count == 1, t.name << ": the planted configuration found " << count << " times");
+    CHECK(t.r.scale_exponent == 0, t.name << ": solved scaled by 2^" << -t.r.scale_exponent << ": the far point is not part of the system");
+    for (const auto& x : t.r.configurations) {
+      Points a = points_of(x.configuration);
+      CHECK(a.count("F") && std::abs(a["F"][0] / CGAL::to_double(fx) - 1) < 1e-12 && std::abs(a["F"][1]) <= 1e-12 * CGAL::to_double(fx),
+            t.name << ": F is not where the frame body puts it");
+    }
+    print_run(t);
   }
   std::cout << "  (" << seconds_since(t0) << " s)\n";
 }

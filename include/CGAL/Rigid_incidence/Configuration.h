@@ -88,14 +88,25 @@ inline Rigid_fit fit_rigid_motion(const std::vector<std::array<double, 3>>& y, c
   Rigid_fit f;
   const std::size_t n = y.size();
   if (n < 3 || x.size() != n) return f;
+  // in units of the largest coordinate (a power of two, exact): a point at 1e308 would
+  // overflow the products of the cross-covariance
+  double big = 0;
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t k = 0; k < 3; ++k) big = (std::max)(big, (std::max)(std::abs(y[i][k]), std::abs(x[i][k])));
+  if (!std::isfinite(big)) return f;
+  int unit = 0;
+  if (big > 0) std::frexp(big, &unit);
+  auto in_units = [unit](const std::array<double, 3>& p) {
+    return Eigen::Vector3d(std::ldexp(p[0], -unit), std::ldexp(p[1], -unit), std::ldexp(p[2], -unit));
+  };
   Eigen::Vector3d cy = Eigen::Vector3d::Zero(), cx = Eigen::Vector3d::Zero();
-  for (std::size_t i = 0; i < n; ++i) { cy += Eigen::Vector3d(y[i][0], y[i][1], y[i][2]); cx += Eigen::Vector3d(x[i][0], x[i][1], x[i][2]); }
+  for (std::size_t i = 0; i < n; ++i) { cy += in_units(y[i]); cx += in_units(x[i]); }
   cy /= double(n);
   cx /= double(n);
   Eigen::Matrix3d H = Eigen::Matrix3d::Zero();
   double scale = 0;
   for (std::size_t i = 0; i < n; ++i) {
-    Eigen::Vector3d a = Eigen::Vector3d(y[i][0], y[i][1], y[i][2]) - cy, b = Eigen::Vector3d(x[i][0], x[i][1], x[i][2]) - cx;
+    Eigen::Vector3d a = in_units(y[i]) - cy, b = in_units(x[i]) - cx;
     H += a * b.transpose();
     scale = (std::max)(scale, a.norm());
   }
@@ -117,14 +128,17 @@ inline Rigid_fit fit_rigid_motion(const std::vector<std::array<double, 3>>& y, c
   Eigen::Vector3d t = cx - R * cy;
   for (int i = 0; i < 3; ++i) {
     for (int j = 0; j < 3; ++j) f.motion.R[std::size_t(3 * i + j)] = R(i, j);
-    f.motion.t[std::size_t(i)] = t(i);
+    f.motion.t[std::size_t(i)] = std::ldexp(t(i), unit);
   }
   double s = 0;
   for (std::size_t i = 0; i < n; ++i) {
     auto p = f.motion(y[i]);
-    for (int k = 0; k < 3; ++k) s += (p[std::size_t(k)] - x[i][std::size_t(k)]) * (p[std::size_t(k)] - x[i][std::size_t(k)]);
+    for (int k = 0; k < 3; ++k) {
+      const double d = std::ldexp(p[std::size_t(k)] - x[i][std::size_t(k)], -unit);
+      s += d * d;
+    }
   }
-  f.rms = std::sqrt(s / double(n));
+  f.rms = std::ldexp(std::sqrt(s / double(n)), unit);
   f.ok = true;
   return f;
 }
@@ -154,9 +168,18 @@ struct Configuration
 };
 
 namespace internal {
+// The middle of an enclosure as a double; (inf + sup) / 2, CGAL's to_double of an interval,
+// overflows at 1e308.
+template <class NT> double middle(const NT& x)
+{
+  if constexpr (std::is_same<NT, CGAL::Interval_nt<false>>::value || std::is_same<NT, CGAL::Interval_nt<true>>::value)
+    return 0.5 * x.inf() + 0.5 * x.sup();
+  else
+    return CGAL::to_double(x);
+}
 template <class NT> std::array<double, 3> to_double3(const std::array<NT, 3>& p)
 {
-  return {CGAL::to_double(p[0]), CGAL::to_double(p[1]), CGAL::to_double(p[2])};
+  return {middle(p[0]), middle(p[1]), middle(p[2])};
 }
 } // namespace internal
 
@@ -225,7 +248,7 @@ Configuration configuration(const Reduced_system<Traits, NT>& r, const std::vect
       auto e = enclose_coordinates<CGAL::Interval_nt<false>>(c, b, b < variants.size() ? variants[b] : 0);
       if (!e.consistent) continue;
       for (std::size_t i = 0; i < body.points.size(); ++i)
-        local[i] = {CGAL::to_double(e.coordinates[i][0]), CGAL::to_double(e.coordinates[i][1]), CGAL::to_double(e.coordinates[i][2])};
+        local[i] = internal::to_double3(e.coordinates[i]);
     }
     std::vector<std::array<double, 3>> y, w;
     for (std::size_t i = 0; i < body.points.size(); ++i)
@@ -294,6 +317,27 @@ struct Residual_report
   }
 };
 
+/// \ingroup PkgRigidIncidenceRef
+/// Multiplies every length of `c` by 2^`k` (points and translations): the configuration of
+/// the scene scaled by 2^`k`.
+inline void scale_configuration(Configuration& c, long k)
+{
+  for (auto& p : c.points) for (double& x : p) x = std::ldexp(x, int(k));
+  for (auto& m : c.poses) for (double& x : m.t) x = std::ldexp(x, int(k));
+}
+
+/// \ingroup PkgRigidIncidenceRef
+/// The residuals of a configuration scaled by 2^`k` (see `scale_configuration()`): lengths
+/// times 2^`k`, squared lengths (DISTANCE) times 4^`k`.
+inline void scale_residuals(Residual_report& r, long k)
+{
+  for (auto& e : r.entries)
+    if (e.kind == Residual::DISTANCE) e.value = std::ldexp(e.value, int(2 * k));
+    else if (e.kind == Residual::INCIDENCE || e.kind == Residual::BODY) e.value = std::ldexp(e.value, int(k));
+  r.max_incidence = std::ldexp(r.max_incidence, int(k));
+  r.max_distance = std::ldexp(r.max_distance, int(2 * k));
+}
+
 /*!
 \ingroup PkgRigidIncidenceRef
 \brief The residuals of `conf` in the ORIGINAL system of `original` (the collection as the
@@ -317,6 +361,7 @@ Residual_report residuals(const Rigid_body_collection<Traits>& original, const C
     return true;
   };
   auto add = [&](Residual::Kind k, const std::string& what, double v) {
+    if (std::isnan(v)) v = std::numeric_limits<double>::infinity();  // never a silent pass
     rep.entries.push_back(Residual{k, what, v});
     if (k == Residual::INCIDENCE || k == Residual::BODY) rep.max_incidence = (std::max)(rep.max_incidence, v);
     if (k == Residual::DISTANCE) rep.max_distance = (std::max)(rep.max_distance, v);
@@ -351,7 +396,10 @@ Residual_report residuals(const Rigid_body_collection<Traits>& original, const C
     if (!fit[b].ok) { add(Residual::UNPLACED, name + " (fewer than 3 points, or all at one place)", std::numeric_limits<double>::infinity()); continue; }
     if (fit[b].reflected) add(Residual::MIRRORED, name + " fits only mirrored", 1);
     double worst = 0;
-    for (std::size_t i = 0; i < x.size(); ++i) worst = (std::max)(worst, std::sqrt(dist2(fit[b].motion(local[b][i]), x[i])));
+    for (std::size_t i = 0; i < x.size(); ++i) {  // (hypot: no overflow for a point at 1e308)
+      const auto p = fit[b].motion(local[b][i]);
+      worst = (std::max)(worst, std::hypot(p[0] - x[i][0], p[1] - x[i][1], p[2] - x[i][2]));
+    }
     add(Residual::BODY, name, worst);
   }
   // incidences: every shared point in every pair of fitted bodies

@@ -7,6 +7,7 @@
 #define CGAL_RIGID_INCIDENCE_RIGID_INCIDENCE_TRAITS_H
 
 #include <CGAL/Gmpq.h>
+#include <CGAL/Gmpz.h>
 #include <CGAL/Rigid_incidence/Input_error.h>
 #include <CGAL/number_utils.h>
 #include <CGAL/Algebraic_structure_traits.h>
@@ -16,9 +17,21 @@
 #include <string>
 #include <type_traits>
 #include <utility>
+#include <vector>
 
 namespace CGAL {
 namespace Rigid_incidence {
+
+namespace internal {
+// FT is a lazy exact number whose exact type ET can be made from a GMP rational (Epeck's FT:
+// Lazy_exact_nt of Boost.Multiprecision's gmp_rational)
+template <class FT, class = void>
+struct Exact_from_mpq : std::false_type {};
+template <class FT>
+struct Exact_from_mpq<FT, std::void_t<typename FT::ET>>
+    : std::integral_constant<bool, std::is_constructible<typename FT::ET, mpq_srcptr>::value &&
+                                       std::is_constructible<FT, typename FT::ET>::value> {};
+} // namespace internal
 
 /*!
 \ingroup PkgRigidIncidenceRef
@@ -57,6 +70,15 @@ struct Rigid_incidence_traits
     if constexpr (std::is_constructible<FT, CGAL::Gmpq>::value && has_exact_ft) {
       out = FT(q);
       return true;
+    } else if constexpr (has_exact_ft && internal::Exact_from_mpq<FT>::value) {
+      // a lazy exact number (Epeck's FT) from its exact type, e.g. Boost.Multiprecision's
+      // GMP rational: exactly, never through a double
+      out = FT(typename FT::ET(q.mpq()));
+      return true;
+    } else if constexpr (has_exact_ft) {
+      // any other exact field: numerator and denominator built from 30-bit digits
+      out = from_integer(q.numerator()) / from_integer(q.denominator());
+      return true;
     } else {
       if (q == 0) { out = FT(0); return true; }
       CGAL::Gmpq a = q < 0 ? CGAL::Gmpq(-q) : q;
@@ -68,6 +90,23 @@ struct Rigid_incidence_traits
       out = FT(d);
       return true;
     }
+  }
+
+  /// The integer `z` in `FT`, exactly when `FT` is exact (Horner's rule on 30-bit digits).
+  static FT from_integer(const CGAL::Gmpz& z)
+  {
+    const bool negative = z < 0;
+    CGAL::Gmpz a = negative ? CGAL::Gmpz(-z) : z;
+    std::vector<long> digits;
+    while (a != 0) {
+      CGAL::Gmpz r;
+      mpz_fdiv_r_2exp(r.mpz(), a.mpz(), 30);
+      digits.push_back(mpz_get_si(r.mpz()));
+      mpz_fdiv_q_2exp(a.mpz(), a.mpz(), 30);
+    }
+    FT out(0);
+    for (std::size_t i = digits.size(); i-- > 0;) out = out * FT(1 << 30) + FT(int(digits[i]));
+    return negative ? -out : out;
   }
 
   /// As above, throwing `Input_error` (with `where` in the message) when `q` is out of range.

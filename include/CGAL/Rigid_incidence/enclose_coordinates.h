@@ -858,7 +858,8 @@ private:
   }
 };
 
-// The widest coordinate enclosure of a list of placements, in units of `scale`.
+// The widest coordinate enclosure of a list of placements, in units of `scale` (or of the
+// coordinate, where it is larger).
 template <class W>
 double relative_width(const std::vector<Body_enclosure<W>>& all, double scale)
 {
@@ -869,7 +870,10 @@ double relative_width(const std::vector<Body_enclosure<W>>& all, double scale)
         std::pair<double, double> i = CGAL::to_interval(v);
         double d = i.second - i.first;
         if (!(d <= std::numeric_limits<double>::max())) return std::numeric_limits<double>::infinity();
-        w = (std::max)(w, d / scale);
+        // relative to the coordinate itself where it is larger than the body: a point far
+        // from the others (at 1e308) is enclosed to a unit in the last place of its double,
+        // which no precision narrows
+        w = (std::max)(w, d / (std::max)({scale, std::abs(i.first), std::abs(i.second)}));
       }
   return w;
 }

@@ -21,6 +21,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <functional>
 #include <cmath>
 #include <array>
 #include <sstream>
@@ -80,7 +81,11 @@ struct Scene_configuration
   std::vector<std::pair<double, double>> parameters;  ///< per parameter: its certified enclosure
   Configuration configuration;                        ///< every body's pose, every point
   Residual_report residuals;                          ///< in the original system
-  double max_residual = 0;                            ///< `residuals.max()`
+  double max_residual = 0;                            ///< `residuals.max()` (absolute: lengths and squared lengths)
+  /// the largest residual relative to the configuration's size (the diagonal of its bounding
+  /// box): incidences and body fits divided by it, squared distances by its square; this is
+  /// what `Scene_solve_parameters::residual_threshold` bounds (infinity: mirrored or unplaced)
+  double max_relative_residual = 0;
   std::size_t found = 1;                              ///< chart combinations it was found in
   /// a double configuration: a body's placement in it is a double one (a point exactly on the
   /// plane of the three points it is placed from, decided exactly); the enclosure is certified,
@@ -159,7 +164,7 @@ struct Scene_placement_report
   std::size_t placements = 0;   ///< placements found (all of them when `complete`)
   bool complete = true;         ///< false: stopped at `Scene_solve_parameters::maximal_placements`
   unsigned precision = 53;      ///< bits of the interval arithmetic that enclosed them (53: double)
-  double relative_width = 0;    ///< widest coordinate enclosure, relative to the body's size
+  double relative_width = 0;    ///< widest coordinate enclosure, relative to the body's size (or to the coordinate, where larger)
   std::string singular;         ///< nonempty: every placement is a double one, and where
   std::string inconsistent;     ///< nonempty: no real placement (decided exactly), and why
   /// nonempty: a choice left undecided at the final precision (see
@@ -190,6 +195,11 @@ struct Scene_solve_result
   /// nonempty: the scene has no real configuration, decided exactly, and why (the result is
   /// complete with no configuration)
   std::string no_configuration;
+  /// the scene was solved scaled by 2^-`scale_exponent` (exactly), at unit size, when its size
+  /// is beyond 2^+-20 (see `solve_scene()`); configurations, residuals and unresolved
+  /// regions' centres are given back at the scene's own scale, parameters and curves'
+  /// `max_residual` stay those of the scaled scene
+  long scale_exponent = 0;
   /// every configuration certified, nothing unresolved and no limit reached
   bool complete() const
   {
@@ -292,10 +302,14 @@ inline double configuration_size(const Configuration& a)
     }
     first = false;
   }
+  // the diagonal of the bounding box, without overflow (a point at 1e308 has a size)
+  double big = 0;
+  for (int k = 0; k < 3; ++k) big = (std::max)(big, hi[k] - lo[k]);
+  if (!(big > 0)) return 1.0;
+  if (!std::isfinite(big)) return std::numeric_limits<double>::max();
   double s = 0;
-  for (int k = 0; k < 3; ++k) s += (hi[k] - lo[k]) * (hi[k] - lo[k]);
-  s = std::sqrt(s);
-  return s > 0 ? s : 1.0;
+  for (int k = 0; k < 3; ++k) s += ((hi[k] - lo[k]) / big) * ((hi[k] - lo[k]) / big);
+  return big * std::sqrt(s);
 }
 
 // A configuration satisfies the original system: incidences and body fits (lengths) within
@@ -305,6 +319,97 @@ inline bool verified(const Residual_report& r, double threshold, double size)
 {
   if (!r.complete || r.mirrored) return false;
   return r.max_incidence <= threshold * size && r.max_distance <= threshold * size * size;
+}
+
+// The largest residual relative to `size` (see Scene_configuration::max_relative_residual).
+inline double relative_residual(const Residual_report& r, double size)
+{
+  if (!r.complete || r.mirrored) return std::numeric_limits<double>::infinity();
+  return (std::max)(r.max_incidence / size, r.max_distance / size / size);
+}
+
+// About log2 |x| for x != 0 through a double (the overload for Gmpq, exact at any size, is in
+// Polynomial_system.h).
+template <class FT>
+long binary_exponent(const FT& x)
+{
+  const double d = CGAL::to_double(x);
+  if (!std::isfinite(d)) return 1100;
+  if (d == 0) return -1100;
+  int e = 0;
+  std::frexp(d, &e);
+  return e;
+}
+
+// The size of a collection as a power of two: the largest exponent of the coordinates of the
+// points that enter the reduced system (points of two or more bodies, ends of distances) and
+// of the distances (half the exponent of the squared ones). A point of one body alone does
+// not count: a frame point at 1e308 does not make a unit-size hinge tiny.
+template <class Traits>
+long size_exponent(const Rigid_body_collection<Traits>& c)
+{
+  typedef typename Rigid_body_collection<Traits>::Body Body;
+  std::vector<int> uses(c.number_of_points(), 0);
+  for (const auto& b : c.bodies()) for (std::size_t q : b.points) ++uses[q];
+  for (const auto& d : c.distances()) { uses[d.a] += 2; uses[d.b] += 2; }
+  long hi = 0;
+  bool any = false;
+  auto see = [&](const typename Traits::FT& v, long div) {
+    if (v == 0) return;
+    const long e = binary_exponent(v) / div;
+    hi = any ? (std::max)(hi, e) : e;
+    any = true;
+  };
+  std::function<void(const Body&)> body = [&](const Body& b) {
+    for (std::size_t i = 0; i < b.points.size(); ++i)
+      if (b.has_coordinates[i] && b.points[i] < uses.size() && uses[b.points[i]] >= 2) {
+        see(Traits::x(b.coordinates[i]), 1);
+        see(Traits::y(b.coordinates[i]), 1);
+        see(Traits::z(b.coordinates[i]), 1);
+      }
+    for (const auto& d : b.squared_distances) see(d.squared, 2);
+    for (const auto& part : b.parts) body(part);
+  };
+  for (const auto& b : c.bodies()) body(b);
+  for (const auto& d : c.distances()) see(d.squared, 2);
+  return hi;
+}
+
+// The collection with every length multiplied by 2^e, exactly (coordinates, distances, parts).
+template <class Traits>
+Rigid_body_collection<Traits> scaled_collection(Rigid_body_collection<Traits> c, long e)
+{
+  typedef typename Traits::FT FT;
+  typedef typename Rigid_body_collection<Traits>::Body Body;
+  FT f(1);
+  for (long left = e; left != 0;) {  // factors of at most 2^900: exact in a double
+    const long s = (std::max)(-900L, (std::min)(900L, left));
+    f = f * FT(std::ldexp(1.0, int(s)));
+    left -= s;
+  }
+  const FT f2 = f * f;
+  std::function<void(Body&)> scale = [&](Body& b) {
+    for (auto& p : b.coordinates) p = Traits::point(Traits::x(p) * f, Traits::y(p) * f, Traits::z(p) * f);
+    for (auto& d : b.squared_distances) d.squared = d.squared * f2;
+    for (auto& part : b.parts) scale(part);
+  };
+  for (auto& b : c.mutable_bodies()) scale(b);
+  for (auto& d : c.mutable_distances()) d.squared = d.squared * f2;
+  return c;
+}
+
+// The result of the scene scaled by 2^-k at the scene's own scale (k adds to scale_exponent).
+inline void scale_result(Scene_solve_result& r, long k)
+{
+  for (auto& x : r.configurations) {
+    scale_configuration(x.configuration, k);
+    scale_residuals(x.residuals, k);
+    x.max_residual = x.residuals.max();
+  }
+  for (auto& u : r.unresolved) scale_configuration(u.at_centre, k);
+  for (auto& c : r.curves)
+    for (auto& f : c.configurations) scale_configuration(f, k);
+  r.scale_exponent += k;
 }
 
 // The equation to leave out of a square system whose solution set is a curve: at the centre
@@ -480,26 +585,13 @@ inline std::vector<Scene_curve> join_pieces(std::vector<Scene_piece>& pieces, do
 
 } // namespace internal
 
-/*!
-\ingroup PkgRigidIncidenceSolver
-\brief Every real configuration of a scene: the reduced system solved in every chart
-combination by `Subdivision_solver<IT>`, each root turned into a configuration, verified in
-the original system, and roots found in two charts merged.
+namespace internal {
 
-\tparam IT the solver's interval type (`CGAL::Interval_nt<false>` or `CGAL::Gmpfi`)
-\tparam NT the coefficient type of the reduced system: `CGAL::Gmpq` when every covering body
-has coordinates (then a root the double precision cannot certify is retried with more bits),
-else `CGAL::Interval_nt<false>` or `CGAL::Gmpfi`
-\param original the collection as the scene file gives it (for the residuals)
-\param c its standard collection (`standardize()`)
-\param tree the incidence tree of `c` (`optimal_incidence_tree()`)
-\param selection the well-formed incidences for `tree` (`select_well_formed_incidences()`)
-\param parameters the solver's parameters and the tolerances of merging and verification
-*/
+// solve_scene() at the scene's own scale
 template <class IT, class NT, class Traits>
-Scene_solve_result solve_scene(const Rigid_body_collection<Traits>& original, const Rigid_body_collection<Traits>& c,
+Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& original, const Rigid_body_collection<Traits>& c,
                                const Incidence_tree& tree, const Well_formed_selection& selection,
-                               const Scene_solve_parameters& parameters = Scene_solve_parameters())
+                               const Scene_solve_parameters& parameters)
 {
   typedef std::chrono::steady_clock Clock;
   auto since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
@@ -800,6 +892,7 @@ Scene_solve_result solve_scene(const Rigid_body_collection<Traits>& original, co
           v.residuals = residuals(original, v.configuration);
           v.max_residual = v.residuals.max();
           const double vsize = internal::configuration_size(v.configuration);
+          v.max_relative_residual = internal::relative_residual(v.residuals, vsize);
           if (internal::verified(v.residuals, parameters.residual_threshold, vsize)) {
             // two placements that put every point at the same place are one configuration
             bool same = false;
@@ -860,6 +953,44 @@ Scene_solve_result solve_scene(const Rigid_body_collection<Traits>& original, co
     return false;
   });
   return out;
+}
+
+} // namespace internal
+
+/*!
+\ingroup PkgRigidIncidenceSolver
+\brief Every real configuration of a scene: the reduced system solved in every chart
+combination by `Subdivision_solver<IT>`, each root turned into a configuration, verified in
+the original system, and roots found in two charts merged.
+
+A scene whose size (see below) is beyond 2^+-20 is solved scaled by a power of two, exactly,
+at unit size (the reduced system's coefficients grow as the sixth power of the size and
+would leave the range of doubles at 1e55), and its configurations are given back at its own
+scale (`Scene_solve_result::scale_exponent`). The size counts the coordinates of the points
+that enter the reduced system (points of two or more bodies, ends of distances) and the
+distances, not the points of one body alone.
+
+\tparam IT the solver's interval type (`CGAL::Interval_nt<false>` or `CGAL::Gmpfi`)
+\tparam NT the coefficient type of the reduced system: `CGAL::Gmpq` when every covering body
+has coordinates (then a root the double precision cannot certify is retried with more bits),
+else `CGAL::Interval_nt<false>` or `CGAL::Gmpfi`
+\param original the collection as the scene file gives it (for the residuals)
+\param c its standard collection (`standardize()`)
+\param tree the incidence tree of `c` (`optimal_incidence_tree()`)
+\param selection the well-formed incidences for `tree` (`select_well_formed_incidences()`)
+\param parameters the solver's parameters and the tolerances of merging and verification
+*/
+template <class IT, class NT, class Traits>
+Scene_solve_result solve_scene(const Rigid_body_collection<Traits>& original, const Rigid_body_collection<Traits>& c,
+                               const Incidence_tree& tree, const Well_formed_selection& selection,
+                               const Scene_solve_parameters& parameters = Scene_solve_parameters())
+{
+  const long k = internal::size_exponent(c);
+  if (k >= -20 && k <= 20) return internal::solve_scene_unscaled<IT, NT>(original, c, tree, selection, parameters);
+  Scene_solve_result r = internal::solve_scene_unscaled<IT, NT>(internal::scaled_collection(original, -k), internal::scaled_collection(c, -k),
+                                                                tree, selection, parameters);
+  internal::scale_result(r, k);
+  return r;
 }
 
 } // namespace Rigid_incidence

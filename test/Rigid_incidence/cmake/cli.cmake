@@ -144,6 +144,18 @@ if(TARGET rigid_incidence)
     coincidence_hinge "'K1' and 'H1' are one point&&'K2' and 'H2' are one point&&2 configuration\\(s\\), all certified: complete&&K1 = &&K2 = "
     coincidence_apart "no real configuration&&body 'A' holds 'R'&&'P'&&0 configuration\\(s\\), all certified: complete")
   _ri_table(cli_ solve ${_ri_coincidence_dir} 0 STDOUT "" _ri_coincidence_solve_table)
+  # issue 27, item 7: --kernel epeck reads exactly (it rounded to doubles, then refused the
+  # hinge: "squared 0.25000000000000011 vs 0.25"); item 6: a frame point at 1e308 alone does
+  # not scale the scene (it did, by 2^-1023, and the hinge came out incomplete)
+  set(_ri_data ${CMAKE_CURRENT_LIST_DIR}/../data)
+  foreach(_k exact epick epeck)
+    add_test(NAME cli_solve_decimal_hinge_${_k}
+             COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${_ri_data}/decimal_hinge.json|--kernel|${_k}" -DEXPECT_RC=0
+                     "-DEXPECT_STDOUT=2 configuration\\(s\\), all certified: complete" -P ${_ri_cli_script})
+  endforeach()
+  add_test(NAME cli_solve_hinge_far_frame_point
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${_ri_data}/hinge_far_frame_point.json" -DEXPECT_RC=0
+                   "-DEXPECT_STDOUT=2 configuration\\(s\\), all certified: complete&&F = \\(1e\\+308, 0, 0\\)" -P ${_ri_cli_script})
   # every file of the directory must be in a table: a file without a line gets a failing test
   file(GLOB _files RELATIVE ${_ri_malformed_dir} ${_ri_malformed_dir}/*.json)
   foreach(_f ${_files})
