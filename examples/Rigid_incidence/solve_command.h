@@ -420,6 +420,8 @@ int solve(const RI::Scene& scene, const RI::Rigid_body_collection<Traits>& input
     j["diagnosis"] = r.diagnosis.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(r.diagnosis);
     j["no_configuration"] = r.no_configuration.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(r.no_configuration);
     j["limits"] = r.limits;
+    j["coefficient_precision"] = r.coefficient_precision;
+    j["precision_history"] = r.precision_history;
     nlohmann::ordered_json co = nlohmann::ordered_json::array();
     for (const auto& a : input.aliases()) co.push_back({{"label", a.alias}, {"same_point_as", a.label}, {"because", a.why}});
     j["coincidences"] = co;
@@ -502,6 +504,7 @@ int solve(const RI::Scene& scene, const RI::Rigid_body_collection<Traits>& input
                   {"boxes", st.boxes}, {"krawczyk_tests", st.krawczyk_tests}, {"roots", st.roots},
                   {"duplicates_merged", st.duplicates}, {"spurious_rejected", st.spurious}, {"curve_boxes", st.curve_boxes},
                   {"placements_excluded", st.placements_excluded},
+                  {"coefficient_width", st.coefficient_width},
                   {"seconds", {{"analysis", analysis_seconds}, {"reduce", st.reduce_seconds}, {"solve", st.solve_seconds},
                                {"verify", st.verify_seconds}}}};
     std::cout << j.dump(2) << "\n";
@@ -522,6 +525,10 @@ int solve(const RI::Scene& scene, const RI::Rigid_body_collection<Traits>& input
               << x.precision << " bits (relative width " << std::setprecision(2) << x.relative_width << std::setprecision(10) << ")"
               << (x.singular.empty() ? "" : "; singular: " + x.singular) << "\n";
   for (const auto& l : r.limits) std::cout << "limit reached: " << l << "\n";
+  if (!r.precision_history.empty()) {
+    std::cout << "coefficients re-solved at " << r.coefficient_precision << " bits; before:\n";
+    for (const auto& h : r.precision_history) std::cout << "  at " << h << "\n";
+  }
   for (const auto& q : scene.inequalities)
     std::cout << "inequality: det(" << q.points[1] << " - " << q.points[0] << ", " << q.points[2] << " - " << q.points[0] << ", "
               << q.points[3] << " - " << q.points[0] << ") " << (q.negative ? "<= 0" : ">= 0") << "\n";

@@ -9,7 +9,9 @@
 // onto the printed points.
 //   solve_json_check OUTPUT SCENE [--solutions N] [--complete true|false] [--certified N]
 //                    [--diagnosis PREFIX] [--unresolved-reason SUBSTRING] [--no-solutions-count]
-//                    [--tolerance T]
+//                    [--tolerance T] [--distinct D] [--coefficient-precision-at-least BITS]
+// --distinct: two solutions must differ by more than D times the scene's size (default 1e-7;
+// tetra_i's two configurations are 1.5e-15 apart).
 
 #include "test_check.h"
 
@@ -138,7 +140,8 @@ int main(int argc, char** argv)
         P3 q = {it.value()[0].get<double>(), it.value()[1].get<double>(), it.value()[2].get<double>()};
         d = std::max(d, dist(q, pts[it.key()]));
       }
-      CHECK(d > 1e-7 * scale, "solutions " << t << " and " << s << " are the same configuration");
+      const double distinct = expect.count("--distinct") ? std::stod(expect["--distinct"]) : 1e-7;
+      CHECK(d > distinct * scale, "solutions " << t << " and " << s << " are the same configuration");
     }
   }
   auto want_bool = [&](const std::string& k, bool got) {
@@ -159,6 +162,9 @@ int main(int argc, char** argv)
     }
     CHECK(any, "no unresolved region with reason containing '" << expect["--unresolved-reason"] << "'");
   }
+  if (expect.count("--coefficient-precision-at-least"))
+    CHECK(j["coefficient_precision"].get<long>() >= std::stol(expect["--coefficient-precision-at-least"]) && !j["precision_history"].empty(),
+          "coefficient_precision " << j["coefficient_precision"] << ", precision_history " << j["precision_history"].dump());
   if (j["complete"].get<bool>()) CHECK(j["unresolved"].empty() && j["diagnosis"].is_null(), "complete with unresolved regions or a diagnosis");
   std::cout << "solve_json_check " << argv[1] << ": " << sols.size() << " solutions, " << checks << " checks, " << failures << " failures\n";
   return failures ? 1 : 0;

@@ -66,6 +66,14 @@ struct Scene_solve_parameters
   /// `enumerate_placements()`); a body with more is solved for the first ones only and the
   /// result is not complete (`Scene_solve_result::limits` says so)
   std::size_t maximal_placements = default_maximal_placements;
+  /// the most bits the reduced system's coefficients are raised to, when they are enclosed in
+  /// intervals (`NT` = `CGAL::Interval_nt<false>` or `CGAL::Gmpfi`) and the answer is not
+  /// complete for a reason wide coefficients can cause (a positive-dimensional diagnosis, an
+  /// unknown region, a configuration not certified): the scene is solved again with
+  /// `CGAL::Gmpfi` coefficients and solver at 128, 256, ... bits, up to this, until the
+  /// answer is complete (needs MPFI; below 128: never). `Scene_solve_result::precision_history`
+  /// says what each lower precision gave.
+  unsigned maximal_coefficient_precision = 256;
 };
 
 /// \ingroup PkgRigidIncidenceSolver
@@ -150,6 +158,9 @@ struct Scene_solve_statistics
   /// combinations of placements not solved: two bodies put two shared points at distances
   /// that certainly differ (their enclosures are disjoint), so no configuration has them
   std::size_t placements_excluded = 0;
+  /// the widest coefficient enclosure of the reduced systems solved, relative to the largest
+  /// coefficient of its equation (0: exact coefficients)
+  double coefficient_width = 0;
   std::size_t curve_boxes = 0;             ///< boxes visited by the curve tracer, all systems
   double reduce_seconds = 0;               ///< building the reduced systems
   double solve_seconds = 0;                ///< the subdivision solver
@@ -200,6 +211,13 @@ struct Scene_solve_result
   /// regions' centres are given back at the scene's own scale, parameters and curves'
   /// `max_residual` stay those of the scaled scene
   long scale_exponent = 0;
+  /// bits of the reduced system's coefficients in this answer: 0 for exact rationals
+  /// (`NT = CGAL::Gmpq`), 53 for double intervals, the MPFR precision for `CGAL::Gmpfi`
+  unsigned coefficient_precision = 53;
+  /// the answers at lower coefficient precisions that this one replaced (see
+  /// `Scene_solve_parameters::maximal_coefficient_precision`), each as "53 bits: why it was
+  /// not enough (coefficients W wide, T s)"
+  std::vector<std::string> precision_history;
   /// every configuration certified, nothing unresolved and no limit reached
   bool complete() const
   {
@@ -598,6 +616,10 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
   Scene_solve_result out;
   out.fast = parameters.solver.fast;
   Scene_solve_statistics& st = out.statistics;
+  out.coefficient_precision = std::is_same<NT, CGAL::Gmpq>::value ? 0 : 53;
+#ifdef CGAL_USE_MPFI
+  if constexpr (std::is_same<NT, CGAL::Gmpfi>::value) out.coefficient_precision = unsigned(CGAL::Gmpfi::get_default_precision());
+#endif
 
   auto t0 = Clock::now();
   std::vector<std::string> singular_body;
@@ -746,6 +768,7 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
                                         " " + parameters.inequalities[q].points[2] + " " + parameters.inequalities[q].points[3]);
       }
       st.reduce_seconds += since(t1);
+      if constexpr (!std::is_same<NT, CGAL::Gmpq>::value) st.coefficient_width = (std::max)(st.coefficient_width, internal::coefficient_width(sys));
       auto t2 = Clock::now();
       Solver_result<IT> res;
       if (one_dof) {
@@ -955,6 +978,74 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
   return out;
 }
 
+// An answer that is not complete for a reason wide coefficients can cause: a positive-
+// dimensional diagnosis, an unknown region, a configuration or curve not certified, with
+// coefficients that are not exact. Budgets (pending regions) and limits are not such reasons.
+inline bool precision_may_help(const Scene_solve_result& r)
+{
+  if (r.complete() || r.fast || !r.no_configuration.empty() || !r.limits.empty()) return false;
+  if (r.statistics.coefficient_width == 0) return false;
+  if (r.diagnosis.rfind("positive_dimensional", 0) == 0) return true;
+  if (!r.diagnosis.empty()) return false;  // under- or over-constrained: the structure
+  for (const auto& u : r.unresolved) if (u.kind == Box_class::UNKNOWN) return true;
+  for (const auto& x : r.configurations) if (!x.certified) return true;
+  for (const auto& c : r.curves) if (!c.certified) return true;
+  return false;
+}
+
+// What an answer lacked, for Scene_solve_result::precision_history.
+inline std::string precision_note(const Scene_solve_result& r, double seconds)
+{
+  std::size_t unknown = 0, uncertified = 0;
+  for (const auto& u : r.unresolved) if (u.kind == Box_class::UNKNOWN) ++unknown;
+  for (const auto& x : r.configurations) if (!x.certified) ++uncertified;
+  std::string s = std::to_string(r.coefficient_precision) + " bits: " + std::to_string(r.configurations.size()) + " configuration(s)";
+  if (uncertified) s += ", " + std::to_string(uncertified) + " not certified";
+  if (unknown) s += ", " + std::to_string(unknown) + " unknown region(s)";
+  if (r.diagnosis.rfind("positive_dimensional", 0) == 0) s += ", positive-dimensional";
+  std::ostringstream o;
+  o.precision(2);
+  o << " (coefficients " << r.statistics.coefficient_width << " wide, " << seconds << " s)";
+  return s + o.str();
+}
+
+// solve_scene_unscaled(), then again with more bits while precision may be the cause.
+template <class IT, class NT, class Traits>
+Scene_solve_result solve_scene_with_precision(const Rigid_body_collection<Traits>& original, const Rigid_body_collection<Traits>& c,
+                                              const Incidence_tree& tree, const Well_formed_selection& selection,
+                                              const Scene_solve_parameters& parameters)
+{
+  auto t0 = std::chrono::steady_clock::now();
+  Scene_solve_result r = solve_scene_unscaled<IT, NT>(original, c, tree, selection, parameters);
+  if constexpr (std::is_same<NT, CGAL::Gmpq>::value) {
+    return r;  // exact coefficients (the solver raises its own precision)
+  } else {
+    if (!precision_may_help(r)) return r;
+#ifdef CGAL_USE_MPFI
+    while (precision_may_help(r)) {
+      const unsigned bits = r.coefficient_precision < 128 ? 128 : 2 * r.coefficient_precision;
+      if (bits > parameters.maximal_coefficient_precision) break;
+      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      std::vector<std::string> history = r.precision_history;
+      history.push_back(precision_note(r, seconds));
+      t0 = std::chrono::steady_clock::now();
+      Scene_solve_parameters p = parameters;
+      p.solver.precision = bits;
+      Solver_precision_guard<CGAL::Gmpfi> guard(bits);
+      r = solve_scene_unscaled<CGAL::Gmpfi, CGAL::Gmpfi>(original, c, tree, selection, p);
+      r.precision_history = std::move(history);
+    }
+    if (!r.precision_history.empty() && r.diagnosis.rfind("positive_dimensional", 0) == 0)
+      r.diagnosis += "; the same with coefficients at " + std::to_string(r.coefficient_precision) +
+                     " bits (precision ruled out as the cause up to there)";
+#else
+    r.precision_history.push_back("this build has no MPFI: the coefficients were not raised above " +
+                                  std::to_string(r.coefficient_precision) + " bits");
+#endif
+    return r;
+  }
+}
+
 } // namespace internal
 
 /*!
@@ -962,6 +1053,14 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
 \brief Every real configuration of a scene: the reduced system solved in every chart
 combination by `Subdivision_solver<IT>`, each root turned into a configuration, verified in
 the original system, and roots found in two charts merged.
+
+When the coefficients are enclosed in intervals (`NT` is not `CGAL::Gmpq`) and the answer is
+not complete for a reason their width can cause (a positive-dimensional diagnosis, an unknown
+region, a configuration not certified), the scene is solved again with `CGAL::Gmpfi`
+coefficients at 128, then 256 bits (`Scene_solve_parameters::maximal_coefficient_precision`);
+the answer is the last one, `Scene_solve_result::coefficient_precision` says at which
+precision, `precision_history` what the lower ones gave, and a positive-dimensional diagnosis
+that persists says up to which precision precision was ruled out.
 
 A scene whose size (see below) is beyond 2^+-20 is solved scaled by a power of two, exactly,
 at unit size (the reduced system's coefficients grow as the sixth power of the size and
@@ -986,9 +1085,9 @@ Scene_solve_result solve_scene(const Rigid_body_collection<Traits>& original, co
                                const Scene_solve_parameters& parameters = Scene_solve_parameters())
 {
   const long k = internal::size_exponent(c);
-  if (k >= -20 && k <= 20) return internal::solve_scene_unscaled<IT, NT>(original, c, tree, selection, parameters);
-  Scene_solve_result r = internal::solve_scene_unscaled<IT, NT>(internal::scaled_collection(original, -k), internal::scaled_collection(c, -k),
-                                                                tree, selection, parameters);
+  if (k >= -20 && k <= 20) return internal::solve_scene_with_precision<IT, NT>(original, c, tree, selection, parameters);
+  Scene_solve_result r = internal::solve_scene_with_precision<IT, NT>(internal::scaled_collection(original, -k),
+                                                                      internal::scaled_collection(c, -k), tree, selection, parameters);
   internal::scale_result(r, k);
   return r;
 }

@@ -309,8 +309,8 @@ if(TARGET rigid_incidence)
     pent_iv "--solutions|8|--certified|8|--complete|true"
     quad_distinct "--solutions|16|--certified|16|--complete|true"
     tetra_ineq "--solutions|2|--certified|2|--complete|true"
-    tetra_i "--complete|false|--unresolved-reason|multiple"
-    tetra_i_tangent "--complete|false|--unresolved-reason|multiple"
+    tetra_i "--solutions|2|--certified|2|--complete|true|--distinct|1e-17|--coefficient-precision-at-least|128"
+    tetra_i_tangent "--solutions|2|--certified|2|--complete|true|--distinct|1e-17|--coefficient-precision-at-least|128"
     quad "--complete|false|--diagnosis|positive_dimensional"
     quad_symmetric "--complete|false|--diagnosis|positive_dimensional")
   list(LENGTH _ri_solve_table _n)
