@@ -132,8 +132,7 @@ int reduce(const RI::Rigid_body_collection<Traits>& c, const RI::Incidence_tree&
   else if (!form_text.empty() && form_text != "charts")
     throw RI::Input_error("--form: '" + form_text + "' (expected charts or stereographic)");
   if (coefficients.empty() || coefficients == "auto") {
-    coefficients = "exact";
-    for (std::size_t b : t.covering_set) if (!c.body(b).all_coordinates()) coefficients = "interval";
+    coefficients = RI::exact_coefficients(c, t) ? "exact" : "interval";
   }
   if (coefficients == "exact") return print<Traits, CGAL::Gmpq>(c, t, s, charts, form, json, scene_file, naive, coefficients);
   if (coefficients == "interval")

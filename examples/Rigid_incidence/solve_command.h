@@ -369,9 +369,9 @@ int solve(const RI::Scene& scene, const RI::Rigid_body_collection<Traits>& input
           const RI::Incidence_tree& t, const RI::Well_formed_selection& s, const RI::Dof_count& dof, const Solve_options& o, bool json,
           const std::string& scene_file, double analysis_seconds)
 {
-  // exact coefficients when every covering body has coordinates, else certified intervals
-  bool exact = true;
-  for (std::size_t b : t.covering_set) if (!c.body(b).all_coordinates()) exact = false;
+  // exact coefficients when every covering body has coordinates (and no other body holds a
+  // pair through a placement), else certified intervals
+  const bool exact = RI::exact_coefficients(c, t);
   RI::Scene_solve_result r;
   if (o.precision <= 53) {
     if (exact) r = run<CGAL::Interval_nt<false>, CGAL::Gmpq>(scene, input, c, t, s, o);

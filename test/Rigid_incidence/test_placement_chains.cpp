@@ -82,8 +82,7 @@ static RI::Scene_solve_result solve(const Scene& s, const std::string& frame, st
   RI::Rigid_body_collection<Traits> c = RI::standardize(input);
   RI::Incidence_tree t = RI::optimal_incidence_tree(c);
   RI::Well_formed_selection wf = RI::select_well_formed_incidences(c, t);
-  bool exact = true;
-  for (std::size_t b : t.covering_set) if (!c.body(b).all_coordinates()) exact = false;
+  const bool exact = RI::exact_coefficients(c, t);
   RI::Scene_solve_parameters p;
   p.maximal_placements = maximal_placements;
   if (exact) return RI::solve_scene<CGAL::Interval_nt<false>, CGAL::Gmpq>(input, c, t, wf, p);

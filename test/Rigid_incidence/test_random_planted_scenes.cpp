@@ -317,8 +317,7 @@ int main(int argc, char** argv)
       if (dof.dof != 0 || !dof.connected) { ++skipped; continue; }
       RI::Incidence_tree t = RI::optimal_incidence_tree(c);
       RI::Well_formed_selection wf = RI::select_well_formed_incidences(c, t);
-      bool exact = true;
-      for (std::size_t b : t.covering_set) if (!c.body(b).all_coordinates()) exact = false;
+      const bool exact = RI::exact_coefficients(c, t);
       RI::Scene_solve_parameters p;
       p.solver.maximal_boxes = 20000;
       if (exact) r = RI::solve_scene<CGAL::Interval_nt<false>, CGAL::Gmpq>(input, c, t, wf, p);

@@ -36,8 +36,7 @@ static RI::Scene_solve_result solve(const RI::Scene& scene, const std::vector<RI
   RI::Rigid_body_collection<Traits> c = RI::standardize(input);
   RI::Incidence_tree t = RI::optimal_incidence_tree(c);
   RI::Well_formed_selection wf = RI::select_well_formed_incidences(c, t);
-  bool exact = true;
-  for (std::size_t b : t.covering_set) if (!c.body(b).all_coordinates()) exact = false;
+  const bool exact = RI::exact_coefficients(c, t);
   RI::Scene_solve_parameters p;
   p.inequalities = ineq;
   if (exact) return RI::solve_scene<CGAL::Interval_nt<false>, CGAL::Gmpq>(input, c, t, wf, p);

@@ -284,8 +284,7 @@ static Run solve(const RI::Scene& scene, std::size_t boxes = default_boxes)
     RI::Rigid_body_collection<Traits> c = RI::standardize(input);
     RI::Incidence_tree t = RI::optimal_incidence_tree(c);
     RI::Well_formed_selection wf = RI::select_well_formed_incidences(c, t);
-    run.exact = true;
-    for (std::size_t b : t.covering_set) if (!c.body(b).all_coordinates()) run.exact = false;
+    run.exact = RI::exact_coefficients(c, t);
     RI::Scene_solve_parameters p;
     p.solver.maximal_boxes = boxes;
     if (run.exact) run.r = RI::solve_scene<CGAL::Interval_nt<false>, CGAL::Gmpq>(input, c, t, wf, p);

@@ -42,6 +42,45 @@ struct Reduced_equation
 
 /*!
 \ingroup PkgRigidIncidenceRef
+\brief `true` if body `b`, outside the covering set of `tree`, holds two points that the
+covering set places (and no covering body holds both) at a distance it knows only through a
+placement from distances: the reduced system's equation for that pair then depends on the
+body's placement (`solve_scene()` enumerates them) and needs interval coefficients.
+*/
+template <class Traits>
+bool holds_pair_through_placement(const Rigid_body_collection<Traits>& c, const Incidence_tree& tree, std::size_t b)
+{
+  const auto& body = c.body(b);
+  if (body.all_coordinates()) return false;
+  std::vector<bool> covered(c.number_of_points(), false);
+  for (std::size_t x : tree.covering_set) for (std::size_t p : c.body(x).points) covered[p] = true;
+  for (std::size_t i = 0; i < body.points.size(); ++i)
+    for (std::size_t j = i + 1; j < body.points.size(); ++j) {
+      if (!covered[body.points[i]] || !covered[body.points[j]]) continue;
+      bool one = false;
+      for (std::size_t x : tree.covering_set) one = one || (c.body(x).contains(body.points[i]) && c.body(x).contains(body.points[j]));
+      if (!one && !body.squared(i, j)) return true;
+    }
+  return false;
+}
+
+/*!
+\ingroup PkgRigidIncidenceRef
+\brief `true` if the reduced system of `c` and `tree` can have exact rational coefficients
+(`NT = CGAL::Gmpq`): every covering body has coordinates, and no body outside the covering
+set holds a pair of covered points through a placement (`holds_pair_through_placement()`).
+Otherwise use `CGAL::Interval_nt<false>` or `CGAL::Gmpfi`.
+*/
+template <class Traits>
+bool exact_coefficients(const Rigid_body_collection<Traits>& c, const Incidence_tree& tree)
+{
+  for (std::size_t b : tree.covering_set) if (!c.body(b).all_coordinates()) return false;
+  for (std::size_t b : tree.non_covering) if (holds_pair_through_placement(c, tree, b)) return false;
+  return true;
+}
+
+/*!
+\ingroup PkgRigidIncidenceRef
 \brief The reduced system of a standard collection for an incidence tree, a chart per tree edge
 and a placement per body known by distances.
 
@@ -83,7 +122,7 @@ public:
   Reduced_system(const Rigid_body_collection<Traits>& c, const Incidence_tree& tree, const Well_formed_selection& selection,
                  const std::vector<int>& charts = {}, Rotation_form form = Rotation_form::QUATERNION_CHARTS,
                  const std::vector<int>& placements = {})
-    : c_(c), tree_(tree), p_(new Parametrization(c, tree, charts, form, placements))
+    : c_(c), tree_(tree), p_(new Parametrization(c, tree, charts, form, placements)), placements_(placements)
   {
     internal::Rounding_guard<NT> guard;
     (void)guard;
@@ -246,8 +285,20 @@ private:
     if (k.origin == Constraint::BODY_DISTANCE) {
       const auto& body = c_.body(k.body);
       auto sq = body.squared(body.local(k.a), body.local(k.b));
-      if (!sq) throw Input_error("reduced system: body '" + body.name + "' does not fix the distance " + c_.label(k.a) + "-" + c_.label(k.b));
-      d2 = to_nt(*sq);
+      if (sq) {
+        d2 = to_nt(*sq);
+      } else if constexpr (internal::Coefficient_ops<NT>::is_interval) {
+        // a pair the body holds through a placement from distances (its distance is not known
+        // exactly, and differs between placements): its distance in this system's placement
+        const int v = k.body < placements_.size() ? placements_[k.body] : 0;
+        Body_enclosure<NT> e = enclose_coordinates<NT>(c_, k.body, v);
+        if (!e.consistent) throw Input_error("reduced system: body '" + body.name + "': placement " + std::to_string(v) + " admits no placement");
+        const auto &A = e.coordinates[body.local(k.a)], &B = e.coordinates[body.local(k.b)];
+        d2 = (A[0] - B[0]) * (A[0] - B[0]) + (A[1] - B[1]) * (A[1] - B[1]) + (A[2] - B[2]) * (A[2] - B[2]);
+      } else {
+        throw Input_error("reduced system: body '" + body.name + "' fixes the distance " + c_.label(k.a) + "-" + c_.label(k.b) +
+                          " only through a placement from distances: use interval coefficients (see exact_coefficients())");
+      }
     } else {
       d2 = to_nt(c_.distances()[k.distance].squared);
     }
@@ -363,6 +414,7 @@ private:
   const Rigid_body_collection<Traits>& c_;
   Incidence_tree tree_;
   std::shared_ptr<Parametrization> p_;
+  std::vector<int> placements_;
   Constraint_independence independence_;
   std::vector<Reduced_equation<NT>> equations_;
   std::vector<Constraint> left_out_;

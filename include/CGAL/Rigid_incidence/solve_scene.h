@@ -244,7 +244,10 @@ inline Scene_placement_report placement_report(const std::string& body, const Pl
   return r;
 }
 
-// The placements of every covering body known only by distances (counts: 1 for the others).
+// The placements of every covering body known only by distances, and of every body outside
+// the covering set whose equations depend on its placement (holds_pair_through_placement());
+// counts: 1 for the others. Reports and singular reasons for the covering bodies only (the
+// others are reported with the bodies outside the covering set).
 template <class Traits>
 std::vector<int> placement_counts(const Rigid_body_collection<Traits>& c, const Incidence_tree& tree, std::size_t maximal = default_maximal_placements,
                                   std::vector<Scene_placement_report>* reports = nullptr, std::vector<std::string>* singular = nullptr)
@@ -258,6 +261,9 @@ std::vector<int> placement_counts(const Rigid_body_collection<Traits>& c, const 
     if (singular) (*singular)[b] = e->singular;
     if (reports) reports->push_back(placement_report(c.body(b).name, *e));
   }
+  for (std::size_t b : tree.non_covering)
+    if (holds_pair_through_placement(c, tree, b))
+      n[b] = (std::max)(1, int(cached_placements<CGAL::Interval_nt<false>>(c, b, maximal)->placements.size()));
   return n;
 }
 
@@ -653,7 +659,8 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
       out.limits.push_back("body '" + c.body(b).name + "' (outside the covering set) has more than " + std::to_string(e->placements.size()) +
                            " placements (maximal_placements): only the first " + std::to_string(e->placements.size()) + " were tried");
     if (!e->singular.empty()) singular_body[b] = e->singular;
-    if (own_points && e->placements.size() > 1) {
+    // (a body whose equations depend on its placement is enumerated with the covering bodies)
+    if (own_points && e->placements.size() > 1 && !holds_pair_through_placement(c, tree, b)) {
       nc_bodies.push_back(b);
       nc_radix.push_back(int(e->placements.size()));
       nc_product = nc_product > parameters.maximal_placements ? nc_product : nc_product * e->placements.size();
