@@ -308,6 +308,7 @@ if(TARGET rigid_incidence)
     tetra_iii "--solutions|12|--certified|12|--complete|true"
     pent_iv "--solutions|8|--certified|8|--complete|true"
     quad_distinct "--solutions|16|--certified|16|--complete|true"
+    body_distance_through_placement "--solutions|8|--certified|8|--complete|true"
     tetra_ineq "--solutions|2|--certified|2|--complete|true"
     tetra_i "--solutions|2|--certified|2|--complete|true|--distinct|1e-17|--coefficient-precision-at-least|128"
     tetra_i_tangent "--solutions|2|--certified|2|--complete|true|--distinct|1e-17|--coefficient-precision-at-least|128"
