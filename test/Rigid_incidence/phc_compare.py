@@ -131,14 +131,19 @@ def pvar(i):
     return {(i,): Q(1)}
 
 
+def _accumulate(r, m, c):
+    # adds c to the coefficient of monomial m in r, dropping it when it cancels
+    v = r.get(m, 0) + c
+    if v == 0:
+        r.pop(m, None)
+    else:
+        r[m] = v
+
+
 def padd(p, q, s=1):
     r = dict(p)
     for m, c in q.items():
-        v = r.get(m, 0) + s * c
-        if v == 0:
-            r.pop(m, None)
-        else:
-            r[m] = v
+        _accumulate(r, m, s * c)
     return r
 
 
@@ -146,12 +151,7 @@ def pmul(p, q):
     r = {}
     for m1, c1 in p.items():
         for m2, c2 in q.items():
-            m = tuple(sorted(m1 + m2))
-            v = r.get(m, 0) + c1 * c2
-            if v == 0:
-                r.pop(m, None)
-            else:
-                r[m] = v
+            _accumulate(r, tuple(sorted(m1 + m2)), c1 * c2)
     return r
 
 
