@@ -129,6 +129,10 @@ struct Placement_step
   CGAL::Gmpq a, b, s;
   CGAL::Sign sign = CGAL::POSITIVE;  // of s
   std::vector<std::array<std::size_t, 3>> references;  // INTERVAL: candidate reference triples
+  // INTERVAL: per point, the rigid part whose placements give its distance to p (none: the
+  // distance is known exactly); `distance_parts` lists those parts once each
+  std::vector<std::size_t> distance_part;
+  std::vector<std::size_t> distance_parts;
   std::size_t part = 0;                                // PART: which part
   std::vector<std::size_t> places;                     // PART: the points it places
 };
@@ -340,13 +344,25 @@ private:
       }
       for (std::size_t p = 0; p < m && !progress; ++p) {
         if (placed[p]) continue;
-        std::vector<std::size_t> refs;
-        for (std::size_t q = 0; q < m; ++q) if (placed[q] && plan_.known[p][q]) refs.push_back(q);
+        // references: placed points at a known distance, or at a distance a rigid part fixes
+        // (one value per placement of the part; the part is checked whole later)
+        std::vector<std::size_t> refs, from_part(m, none);
+        for (std::size_t q = 0; q < m; ++q) {
+          if (!placed[q]) continue;
+          if (plan_.known[p][q]) { refs.push_back(q); continue; }
+          for (std::size_t j = 0; j < plan_.parts.size(); ++j)
+            if (!used[j] && holds(j, p) && holds(j, q)) { refs.push_back(q); from_part[q] = j; break; }
+        }
         if (refs.size() < 3) continue;
         if (steps) {
           Placement_step s;
           s.kind = Placement_step_kind::INTERVAL;
           s.p = p;
+          s.distance_part = from_part;
+          for (std::size_t q : refs)
+            if (from_part[q] != none &&
+                std::find(s.distance_parts.begin(), s.distance_parts.end(), from_part[q]) == s.distance_parts.end())
+              s.distance_parts.push_back(from_part[q]);
           for (std::size_t a = 0; a < refs.size() && s.references.size() < 20; ++a)
             for (std::size_t b = a + 1; b < refs.size() && s.references.size() < 20; ++b)
               for (std::size_t c = b + 1; c < refs.size() && s.references.size() < 20; ++c)
@@ -359,6 +375,9 @@ private:
     }
     return std::all_of(placed.begin(), placed.end(), [](bool x) { return x; });
   }
+
+  bool holds(std::size_t part, std::size_t p) const
+  { return std::find(plan_.part_map[part].begin(), plan_.part_map[part].end(), p) != plan_.part_map[part].end(); }
 
   std::optional<std::array<std::size_t, 3>> reference_triangle(std::size_t p, const std::vector<bool>& placed) const
   {
@@ -739,11 +758,59 @@ private:
     if (k == steps.size()) { emit(singular, undecided); return; }
     const Placement_step& s = steps[k];
     if (s.kind == Placement_step_kind::PART) { superpose(k, singular, undecided); return; }
-    W a = a_[k], b = b_[k], t = t_[k];
-    std::size_t A = s.A, B = s.B, C = s.C;
-    bool two_sides = s.sign == CGAL::POSITIVE, here_undecided = false;
     if (s.kind == Placement_step_kind::INTERVAL) {
-      // the reference triple farthest from a line, then a, b and s from the placed points
+      std::vector<std::optional<W>> r2(plan_.m);
+      for (std::size_t q = 0; q < plan_.m; ++q) if (plan_.known[s.p][q]) r2[q] = from_rational(*plan_.known[s.p][q]);
+      with_part_distances(k, 0, r2, singular, undecided);
+      return;
+    }
+    trilaterate(k, s.A, s.B, s.C, a_[k], b_[k], t_[k], s.sign == CGAL::POSITIVE, singular, undecided);
+  }
+
+  // The distances of an interval step that rigid parts fix: the product of their placements
+  // (placements giving the same lengths count once), then the trilateration.
+  void with_part_distances(std::size_t k, std::size_t i, std::vector<std::optional<W>>& r2, bool singular, bool undecided)
+  {
+    const Placement_step& s = plan_.steps[k];
+    if (i == s.distance_parts.size()) { interval_step(k, r2, singular, undecided); return; }
+    const std::size_t j = s.distance_parts[i];
+    const auto& map = plan_.part_map[j];
+    auto local = [&](std::size_t q) { return std::size_t(std::find(map.begin(), map.end(), q) - map.begin()); };
+    const std::size_t lp = local(s.p);
+    std::vector<std::size_t> qs;
+    for (std::size_t q = 0; q < plan_.m; ++q) if (s.distance_part[q] == j) qs.push_back(q);
+    std::vector<std::vector<W>> seen;
+    for (const auto& e : part_placements_[j]) {
+      std::vector<W> L;
+      for (std::size_t q : qs) { const P d = sub(e.coordinates[lp], e.coordinates[local(q)]); L.push_back(dot(d, d)); }
+      bool again = false;
+      for (const auto& other : seen) {
+        bool same = true, narrow = true;
+        for (std::size_t c = 0; c < L.size(); ++c) {
+          same = same && internal::overlap(L[c], other[c]);
+          narrow = narrow && narrow_enough(L[c], 2) && narrow_enough(other[c], 2);
+        }
+        if (!same) continue;
+        if (narrow) { again = true; break; }
+        note_undecided(false, "two lengths from '" + plan_.labels[s.p] + "' that its part '" + plan_.parts[j].name +
+                                  "' gives are not separated");
+      }
+      if (again) continue;
+      seen.push_back(L);
+      for (std::size_t c = 0; c < qs.size(); ++c) r2[qs[c]] = L[c];
+      with_part_distances(k, i + 1, r2, singular || e.singular, undecided || e.undecided);
+    }
+  }
+
+  // A trilateration from placed points whose distances are not all known exactly: the
+  // reference triple farthest from a line, then a, b and s from the placed points.
+  void interval_step(std::size_t k, const std::vector<std::optional<W>>& r2, bool singular, bool undecided)
+  {
+    const Placement_step& s = plan_.steps[k];
+    std::size_t A = 0, B = 0, C = 0;
+    bool two_sides = false, here_undecided = false;
+    W a(0), b(0), t(0);
+    {
       double best = 0;
       bool found = false;
       for (const auto& r : s.references) {
@@ -756,9 +823,8 @@ private:
       }
       const P u = sub(x_[B], x_[A]), v = sub(x_[C], x_[A]);
       const W uu = dot(u, u), vv = dot(v, v), uv = dot(u, v), G = uu * vv - uv * uv;
-      const W r1 = from_rational(*plan_.known[s.p][A]), r2 = from_rational(*plan_.known[s.p][B]),
-              r3 = from_rational(*plan_.known[s.p][C]);
-      const W alpha = (r1 - r2 + uu) / W(2), beta = (r1 - r3 + vv) / W(2);
+      const W r1 = *r2[A], r2B = *r2[B], r3 = *r2[C];
+      const W alpha = (r1 - r2B + uu) / W(2), beta = (r1 - r3 + vv) / W(2);
       a = (alpha * vv - beta * uv) / G;
       b = (beta * uu - alpha * uv) / G;
       const W H2 = r1 - (a * a * uu + W(2) * a * b * uv + b * b * vv), S = H2 / G;
@@ -775,6 +841,14 @@ private:
                                   plan_.labels[B] + "' and '" + plan_.labels[C] + "' is not separated from 0");
       }
     }
+    trilaterate(k, A, B, C, a, b, t, two_sides, singular, undecided || here_undecided);
+  }
+
+  // Point p of step k at X_A + a (X_B - X_A) + b (X_C - X_A) +- t (X_B - X_A) x (X_C - X_A).
+  void trilaterate(std::size_t k, std::size_t A, std::size_t B, std::size_t C, const W& a, const W& b, const W& t,
+                   bool two_sides, bool singular, bool undecided)
+  {
+    const Placement_step& s = plan_.steps[k];
     const P& XA = x_[A];
     const P u = sub(x_[B], XA), v = sub(x_[C], XA), n = cross(u, v);
     P w;
@@ -784,7 +858,7 @@ private:
       P xp;
       for (std::size_t i = 0; i < 3; ++i) xp[i] = side > 0 ? w[i] + t * n[i] : w[i] - t * n[i];
       x_[s.p] = xp;
-      next(k, singular, undecided || here_undecided);
+      next(k, singular, undecided);
     }
   }
 
