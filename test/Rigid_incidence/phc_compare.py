@@ -52,9 +52,45 @@ that solves the system here but that no phc run found is a phc failure.
 
 Verdicts per scene: agree; disagree; package-incomplete (the package says incomplete and
 nothing contradicts it); phc-failure (phc failed to run, missed a verified configuration,
-or found a real singular solution). Exit status 0 when every scene agrees, 1 otherwise,
-2 on bad usage. --mutate tampers with the package's answers to show that the comparison
-catches it.
+or found a real singular solution); for scene files also refused and not-compared (below).
+Exit status 0 when every scene agrees, 1 otherwise, 2 on bad usage or a refused file.
+--mutate tampers with the package's answers to show that the comparison catches it.
+
+Scene files (--scene FILE.json, repeatable): the same comparison on existing scenes in the
+format "rigid-incidence-scene/1", each number read exactly (decimals, rationals, JSON
+numbers from their text). A bar (a body of 2 points) enters as the distance of its points,
+as in the package; a point only in bars gets 3 variables of its own; "length" is squared
+exactly. A scene whose size is outside 0.1 to 1000 is divided by a power of 10 (the unit),
+as a generated scene is written with one. Refused, with the reason (verdict "refused", exit
+status 2): "inequalities" (the system here cannot express them: the package prunes by
+them), a "free_distance" (a curve of configurations), a distance of 0 (a coincidence: the
+package merges the labels), bodies the package refuses (collinear, a bar as the frame, bars
+only), lengths more than 8 orders of magnitude apart. There is no planted configuration,
+so the square subsystem is chosen at the configurations the package prints (the world
+coordinates of every point, in the frame's coordinates: "points" of each solution of
+`solve --json`): at each, the Jacobian of every equation (rows scaled to norm 1) has its
+numerical rank from its singular values (one-sided Jacobi SVD, relative threshold 1e-8:
+it must be the number of variables, else the configuration is a singular solution and the
+scene is "not-compared"), and the equations are taken greedily in the order of the exact
+choice, each kept when its row is independent of those kept (its part orthogonal to them
+above 1e-8; a hinge's redundant row leaves 1e-15 or less, the margins are printed); the
+choice whose square Jacobian is nonsingular (inverse condition above 1e-8) at the most
+configurations wins, the first on ties (in practice they are all the same). This is
+sound as the planted choice is: every configuration of the scene solves the square
+subsystem, so phc's solutions include them all; every equation left out is checked on every
+phc solution (Newton on the whole system, residual below 1e-8), so a solution of the
+subsystem alone is never counted; a package configuration at which the chosen subsystem
+were singular is noted, and would come back from phc as singular or not at all (verdict
+phc-failure), never as agreement.
+The planted checks are skipped; the others are the same (every package configuration a
+nonsingular solution of the whole system, the same set as phc's real nonsingular solutions
+when the package says complete). A scene where the package gives no configuration (none
+found, under- or over-constrained, curves) is "not-compared": there is nothing to choose
+the subsystem at. Before phc runs, the size of its system is printed (variables; the total
+degree 2^r after the linear combination, r quadratic equations left).
+
+  phc_compare.py --tool build/examples/Rigid_incidence/rigid_incidence \
+                 --scene examples/Rigid_incidence/data/tetra.json --workdir /tmp/phc_files
 
 Standard library only (fractions, json, random, subprocess, argparse).
 
@@ -68,6 +104,7 @@ One scene again: --scenes 1 --first I (same --seed); its files are WORKDIR/phc_s
 import argparse
 import itertools
 import json
+import math
 import os
 import random
 import re
@@ -264,13 +301,16 @@ class RankBasis:
 class Scene:
     """bodies: list of [name, {label: local (x, y, z)}] (Fractions); frame: index of the
     frame body; distances: list of (u, v, squared); world: planted world coordinates of
-    every label (the frame body's pose is the identity, so world = frame coordinates)."""
+    every label (the frame body's pose is the identity, so world = frame coordinates);
+    empty for a scene read from a file (--scene), which has no planted configuration.
+    labels: every label of a scene read from a file (its bars' too)."""
 
     def __init__(self):
         self.bodies = []
         self.frame = 0
         self.distances = []
         self.world = {}
+        self.labels = set()
         self.structure = ""
 
     def label_bodies(self):
@@ -294,8 +334,32 @@ class Scene:
             "frame": self.bodies[self.frame][0],
         }
 
+    def size2(self):
+        """Of a scene read from a file, exactly: (the square of its size, the square of its
+        smallest length). Its configurations lie, in the frame's coordinates, within the
+        frame body's coordinates plus the bodies' diameters and the distances."""
+        big = max(c * c for p in self.bodies[self.frame][1].values() for c in p)
+        small = None
+        for _, pts in self.bodies:
+            for a, b in itertools.combinations(list(pts.values()), 2):
+                d2 = dot(vsub(a, b), vsub(a, b))
+                big = max(big, d2)
+                small = d2 if small is None else min(small, d2)
+        for _, _, d2 in self.distances:
+            big = max(big, d2)
+            small = min(small, d2)
+        return big, small
+
+    def size(self):
+        return float(self.size2()[0]) ** 0.5
+
     def scale(self):
+        if not self.world:
+            return max(1.0, self.size())
         return max(1.0, max(abs(float(c)) for p in self.world.values() for c in p))
+
+    def all_labels(self):
+        return sorted(self.world) if self.world else sorted(self.labels)
 
 
 def rand_rational(rng, lo=-6, hi=6):
@@ -342,7 +406,8 @@ class Formulation:
         in_distance = {u for u, v, _ in scene.distances} | {v for u, v, _ in scene.distances}
         needed = {lab for lab, bs in lb.items() if len(bs) > 1} | in_distance
         self.var_labels = []  # label of variable triple k (variables 3k, 3k+1, 3k+2)
-        self.values = []  # planted values (Fractions) of the variables
+        # planted values (Fractions) of the variables; None for a scene from a file
+        self.values = [] if scene.world else None
         rep = {}  # label -> polynomial 3-vector of its world position
         fr_pts = scene.bodies[scene.frame][1]
         for lab, p in fr_pts.items():
@@ -354,7 +419,8 @@ class Formulation:
         def new_triple(lab):
             i0 = 3 * len(self.var_labels)
             self.var_labels.append(lab)
-            self.values.extend(scene.world[lab])
+            if self.values is not None:
+                self.values.extend(scene.world[lab])
             return pv_vars(i0)
 
         # bodies in breadth-first order from the frame over shared labels, so that a label
@@ -432,6 +498,11 @@ class Formulation:
                                            padd(rep[lab][k], expr[k], -1)))
             self.body_maps.append((bi, base, coeffs))
         for u, v, d2 in scene.distances:
+            for w in (u, v):
+                if w not in rep:
+                    # a free point (in a scene from a file: the far end of a bar, in no body)
+                    rep[w] = new_triple(w)
+        for u, v, d2 in scene.distances:
             diff = pv_add(rep[u], rep[v], -1)
             self.equations.append(("distance %s-%s" % (u, v), padd(pv_dot(diff, diff), pconst(d2), -1)))
         self.n = 3 * len(self.var_labels)
@@ -440,6 +511,8 @@ class Formulation:
 
     def check_planted(self):
         """The planted configuration must satisfy every equation exactly."""
+        if self.values is None:
+            return []
         bad = [(o, peval(p, self.values)) for o, p in self.equations if peval(p, self.values) != 0]
         return bad
 
@@ -474,6 +547,75 @@ class Formulation:
     def dof(self):
         return self.n - self.select_square()
 
+    def select_square_numeric(self, fsys, configs, tau=1e-8):
+        """The square subsystem of a scene without a planted configuration (--scene), chosen
+        at configurations the package returns (configs: variable vectors, floats).
+
+        At each configuration x, the Jacobian of every equation, each row scaled to norm 1
+        (the rank does not change), is examined twice: its singular values (one-sided
+        Jacobi SVD) give its rank, the number of them above tau times the largest: n when x
+        is an isolated nonsingular solution of the whole system; and the greedy choice
+        takes the equations in their order, keeping each whose row is independent of the
+        rows kept so far (modified Gram-Schmidt: the part of the unit row orthogonal to them
+        has norm above tau), like select_square does exactly. The redundancy a hinge makes
+        holds at every configuration, and the coordinates the package prints are accurate
+        to about 1e-15, so a redundant row leaves a remainder near 1e-15 and an independent
+        one a remainder far above tau (both margins are recorded). A choice is kept when
+        its n rows have a condition number below 1/tau at the configuration; the choice
+        kept at the most configurations wins (the first on ties). Where it is singular, phc
+        may report the configuration singular or miss it: a note, and the comparison says
+        phc-failure rather than agree. Sound as in the planted case: every real
+        configuration solves the square subsystem, and every equation left out is checked
+        on every phc solution afterwards. Sets self.square, self.left_out; returns a dict of
+        the evidence ("chosen" False when no configuration has rank n)."""
+        m = len(self.equations)
+        info = {"chosen": False, "ranks": [], "choices": [], "kept_margin": None, "dropped_margin": None}
+        candidates = []  # (square, left_out)
+        for x in configs:
+            rows = []
+            for k in range(m):
+                g = fsys.grad(k, x)
+                nrm = sum(v * v for v in g) ** 0.5
+                rows.append([v / nrm for v in g] if nrm > 0 else g)
+            sv = singular_values(rows)
+            r = sum(1 for v in sv if v > tau * sv[0]) if sv and sv[0] > 0 else 0
+            info["ranks"].append(r)
+            if r != self.n:
+                continue
+            square, left_out, kept, dropped = greedy_independent_rows(rows, tau)
+            if len(square) != self.n:
+                info["choices"].append("the greedy choice has %d rows, the SVD rank is %d" % (len(square), r))
+                continue
+            if kept is not None:
+                info["kept_margin"] = kept if info["kept_margin"] is None else min(kept, info["kept_margin"])
+            if dropped is not None:
+                info["dropped_margin"] = (dropped if info["dropped_margin"] is None
+                                          else max(dropped, info["dropped_margin"]))
+            if (square, left_out) not in candidates:
+                candidates.append((square, left_out))
+        if not candidates:
+            return info
+        best = None
+        for square, left_out in candidates:
+            conds = []
+            for x in configs:
+                rows = []
+                for k in square:
+                    g = fsys.grad(k, x)
+                    nrm = sum(v * v for v in g) ** 0.5
+                    rows.append([v / nrm for v in g] if nrm > 0 else g)
+                sv = singular_values(rows)
+                conds.append(sv[-1] / sv[0] if sv and sv[0] > 0 else 0.0)
+            good = sum(1 for c in conds if c > tau)
+            if best is None or good > best[0]:
+                best = (good, square, left_out, conds)
+        _, self.square, self.left_out, conds = best
+        info["chosen"] = True
+        info["candidates"] = len(candidates)
+        info["inverse_conditions"] = conds
+        info["singular_at"] = [j for j, c in enumerate(conds) if not c > tau]
+        return info
+
     # positions of every label from values of the variables (floats)
     def all_points(self, x):
         pos = {lab: tuple(float(c) for c in p) for lab, p in self.const.items()}
@@ -503,7 +645,7 @@ class Formulation:
         the rank of the quadratic parts (sphere equations share |p|^2, and so on)."""
         rows, r = self._combine([dict(self.equations[k][1]) for k in self.square])
         self.quadratic_rank = r
-        for p in rows:
+        for p in rows if self.values is not None else []:
             if peval(p, self.values) != 0:
                 raise AssertionError("the combined system misses the planted configuration")
         return rows
@@ -544,7 +686,7 @@ class Formulation:
             raise AssertionError("the reduced system is not square (%d equations, %d variables)"
                                  % (len(rows), len(self.free)))
         self.eliminated = eliminated
-        for p in rows:
+        for p in rows if self.values is not None else []:
             if peval(p, self.values) != 0:
                 raise AssertionError("the reduced system misses the planted configuration")
         return rows
@@ -599,6 +741,58 @@ class Formulation:
                 terms.append(" %s %.17E%s" % (s, abs(cf), mono))
             rows.append("\n".join(terms) + ";")
         return "%d %d\n%s\n" % (len(self.reduced), len(self.free), "\n".join(rows))
+
+
+def singular_values(rows):
+    """Singular values of a matrix (a list of rows, floats), largest first: one-sided Jacobi
+    (Hestenes) on its columns, accurate to a few ulps relative to the largest."""
+    if not rows or not rows[0]:
+        return []
+    cols = [list(c) for c in zip(*rows)]
+    n = len(cols)
+    for _ in range(80):
+        rotated = False
+        for i in range(n - 1):
+            for j in range(i + 1, n):
+                ci, cj = cols[i], cols[j]
+                a = sum(v * v for v in ci)
+                b = sum(v * v for v in cj)
+                c = sum(u * v for u, v in zip(ci, cj))
+                if c == 0.0 or abs(c) <= 1e-16 * (a * b) ** 0.5:
+                    continue
+                rotated = True
+                zeta = (b - a) / (2.0 * c)
+                t = (1.0 if zeta >= 0 else -1.0) / (abs(zeta) + (1.0 + zeta * zeta) ** 0.5)
+                cs = 1.0 / (1.0 + t * t) ** 0.5
+                sn = cs * t
+                cols[i] = [cs * u - sn * v for u, v in zip(ci, cj)]
+                cols[j] = [sn * u + cs * v for u, v in zip(ci, cj)]
+        if not rotated:
+            break
+    return sorted((sum(v * v for v in c) ** 0.5 for c in cols), reverse=True)
+
+
+def greedy_independent_rows(rows, tau):
+    """Rows (each of norm 1, or 0) taken in order, each kept when the part of it orthogonal
+    to the rows kept so far has norm above tau (modified Gram-Schmidt, twice). Returns (kept
+    indices, dropped indices, the smallest remainder kept, the largest remainder dropped)."""
+    basis, kept, dropped = [], [], []
+    rmin, rmax = None, None
+    for k, row in enumerate(rows):
+        r = list(row)
+        for _ in range(2):
+            for q in basis:
+                f = sum(u * v for u, v in zip(r, q))
+                r = [u - f * v for u, v in zip(r, q)]
+        nrm = sum(v * v for v in r) ** 0.5
+        if nrm > tau:
+            basis.append([v / nrm for v in r])
+            kept.append(k)
+            rmin = nrm if rmin is None else min(rmin, nrm)
+        else:
+            dropped.append(k)
+            rmax = nrm if rmax is None else max(rmax, nrm)
+    return kept, dropped, rmin, rmax
 
 
 # ---------------------------------------------------------------------------------------
@@ -767,6 +961,166 @@ def generate_scene(rng, max_distances=6, max_variables=10):
 
 
 # ---------------------------------------------------------------------------------------
+# a scene from a file (--scene)
+
+
+class SceneRefused(Exception):
+    """A scene file this comparison does not handle (the message says why)."""
+
+
+def read_scene_file(path):
+    """A Scene from a file in the format "rigid-incidence-scene/1", every number exact (JSON
+    numbers are read from their text, like the package does), and the unit its lengths
+    are in: the Scene holds them divided by unit (a power of 10, 1 unless the scene's size
+    is outside 0.1 to 1000), so that the system phc sees has coordinates of size 1 to
+    1000, as for a generated scene written with a unit. A bar (a body of 2 points) becomes
+    the distance of its points, as in the package; a point only in bars is a free point
+    (3 variables of its own). Refused (SceneRefused): "inequalities" (the system here
+    has none: the package prunes configurations by them), "free_distance" (a curve of
+    configurations), distances of 0 (coincidences: labels the package merges), lengths
+    and squares that are not positive numbers, bodies the package refuses (fewer than 2
+    points, 3 or more all on one line, a bar as the frame, bars only), unknown labels."""
+    try:
+        with open(path) as fh:
+            doc = json.load(fh, parse_float=str, parse_int=str)
+    except (OSError, ValueError) as e:
+        raise SceneRefused("cannot read %s: %s" % (path, e))
+    if not isinstance(doc, dict) or doc.get("format") != "rigid-incidence-scene/1":
+        raise SceneRefused("%s: not a scene in the format \"rigid-incidence-scene/1\"" % path)
+    if "inequalities" in doc:
+        raise SceneRefused("%s: the scene has \"inequalities\", which the world-coordinate system here "
+                           "cannot express (the package prunes configurations by them): not compared" % path)
+    if "free_distance" in doc:
+        raise SceneRefused("%s: the scene has a \"free_distance\": its configurations form curves (a "
+                           "family), and phc is compared here on isolated ones: not compared" % path)
+
+    def num(v, what):
+        if isinstance(v, bool) or not isinstance(v, str):
+            raise SceneRefused("%s: %s: %r is not a number" % (path, what, v))
+        try:
+            return Q(v.strip())
+        except (ValueError, ZeroDivisionError):
+            raise SceneRefused("%s: %s: %r is not a number" % (path, what, v))
+
+    scene = Scene()
+    bars = []
+    body_names = []
+    for b in doc.get("bodies") or []:
+        name = b.get("name")
+        pts = {}
+        for lab, xyz in (b.get("points") or {}).items():
+            if not isinstance(xyz, list) or len(xyz) != 3:
+                raise SceneRefused("%s: body '%s': point '%s': expected 3 coordinates" % (path, name, lab))
+            pts[lab] = tuple(num(c, "body '%s': point '%s'" % (name, lab)) for c in xyz)
+        body_names.append(name)
+        if len(pts) < 2:
+            raise SceneRefused("%s: body '%s' has fewer than 2 points" % (path, name))
+        if len(pts) == 2:
+            bars.append((name, pts))
+            continue
+        ps = list(pts.values())
+        if all(collinear(ps[0], ps[1], r) for r in ps[2:]):
+            raise SceneRefused("%s: body '%s': its points are collinear (the package refuses it)" % (path, name))
+        scene.bodies.append([name, pts])
+    if not scene.bodies:
+        raise SceneRefused("%s: no body of 3 or more points (bars only, or no bodies)" % path)
+    frame = doc.get("frame")
+    if frame is None:
+        scene.frame = 0  # the first body that is not a bar
+    elif frame in [nm for nm, _ in bars]:
+        raise SceneRefused("%s: the frame '%s' is a bar" % (path, frame))
+    elif frame not in [nm for nm, _ in scene.bodies]:
+        raise SceneRefused("%s: the frame '%s' names no body" % (path, frame))
+    else:
+        scene.frame = [nm for nm, _ in scene.bodies].index(frame)
+    scene.labels = {lab for _, pts in scene.bodies for lab in pts} | {lab for _, pts in bars for lab in pts}
+    for k, d in enumerate(doc.get("distances") or []):
+        between = d.get("between")
+        if not isinstance(between, list) or len(between) != 2 or between[0] == between[1]:
+            raise SceneRefused("%s: distances[%d]: \"between\" must name two different points" % (path, k))
+        u, v = between
+        for w in (u, v):
+            if w not in scene.labels:
+                raise SceneRefused("%s: distances[%d]: names unknown point '%s'" % (path, k, w))
+        if ("squared" in d) == ("length" in d):
+            raise SceneRefused("%s: distances[%d]: give exactly one of \"squared\" and \"length\"" % (path, k))
+        d2 = num(d["squared"], "distances[%d]" % k) if "squared" in d else num(d["length"], "distances[%d]" % k) ** 2
+        if "length" in d and num(d["length"], "distances[%d]" % k) < 0 or d2 < 0:
+            raise SceneRefused("%s: distances[%d]: negative" % (path, k))
+        if d2 == 0:
+            raise SceneRefused("%s: distances[%d] ('%s'-'%s') is 0, a coincidence (the package merges the two "
+                               "labels): not supported by this comparison" % (path, k, u, v))
+        scene.distances.append((u, v, d2))
+    for name, pts in bars:
+        (u, p), (v, q) = sorted(pts.items())
+        scene.distances.append((u, v, dot(vsub(p, q), vsub(p, q))))
+    # the unit: the system here at size 0.1 to 1000 (the scene's own when it is)
+    big, small = scene.size2()
+    if small < Q(1, 10 ** 16) * big:
+        raise SceneRefused("%s: lengths from %s to %s, more than 8 orders of magnitude apart: the "
+                           "comparison in floats (tolerances relative to the scene's size) would not tell "
+                           "configurations apart" % (path, sqrt_str(small), sqrt_str(big)))
+    unit = Q(1)
+    if not Q(1, 100) <= big <= 10 ** 6:
+        e = 0
+        while Q(100) ** (e + 1) <= big:
+            e += 1
+        while Q(100) ** e > big:
+            e -= 1
+        unit = Q(10) ** e
+        scene.bodies = [[nm, {lab: tuple(c / unit for c in p) for lab, p in pts.items()}] for nm, pts in scene.bodies]
+        scene.distances = [(u, v, d2 / (unit * unit)) for u, v, d2 in scene.distances]
+    scene.structure = ("file: %d bodies (%d bars), %d distances, frame %s%s"
+                       % (len(scene.bodies) + len(bars), len(bars), len(doc.get("distances") or []),
+                          scene.bodies[scene.frame][0], "; lengths times %s" % frac_str(unit) if unit != 1 else ""))
+    return scene, unit
+
+
+def sqrt_str(x):
+    """The square root of a positive Fraction, printed, even beyond the range of floats."""
+    lg = (math.log10(x.numerator) - math.log10(x.denominator)) / 2
+    return "%.3g" % 10 ** lg if abs(lg) < 300 else "1e%d" % round(lg)
+
+
+def compare_file(args, index, path, rng_seed):
+    """The comparison for a scene read from a file (--scene): the package runs on the file
+    itself; the square subsystem is chosen at its configurations (compare_formulation)."""
+    t0 = time.time()
+    rec = {"index": index, "seed": rng_seed, "scene": path, "structure": "", "problems": [], "notes": [],
+           "verdict": None}
+    try:
+        scene, unit = read_scene_file(path)
+    except SceneRefused as e:
+        rec["problems"].append(str(e))
+        rec["verdict"] = "refused"
+        return rec
+    rec["structure"] = scene.structure
+    form = Formulation(scene)
+    if form.n == 0:
+        rec["problems"].append("nothing moves: every point is fixed by the frame body")
+        rec["verdict"] = "not-compared"
+        return rec
+    name = "phc_file_%03d_%s" % (index, re.sub(r"[^A-Za-z0-9_.-]", "_", os.path.splitext(os.path.basename(path))[0]))
+    return compare_formulation(args, rec, scene, form, path, name, unit, rng_seed, t0)
+
+
+def system_size(form):
+    """Sizes of the system given to phc: variables and equations of the whole system, the
+    rank of the quadratic parts of the combined square subsystem (its total degree is 2 to
+    that power), the variables left in the reduced form (each of its equations quadratic)."""
+    form.combined()
+    size = {"variables": form.n, "equations": len(form.equations), "square": len(form.square),
+            "quadratic_rank": form.quadratic_rank}
+    try:
+        form.reduce()
+        size["reduced_variables"] = len(form.free)
+    except AssertionError as e:
+        size["reduced_variables"] = -1
+        size["reduce_error"] = str(e)
+    return size
+
+
+# ---------------------------------------------------------------------------------------
 # float Newton and residuals on the whole system
 
 
@@ -796,9 +1150,13 @@ class FloatSystem:
         self.form = form
         self.n = form.n
         self.polys = [[(float(c), m) for m, c in p.items()] for _, p in form.equations]
-        self.square = form.square
         # scale of each equation: its largest coefficient
         self.eq_scale = [max(abs(c) for c, _ in p) for p in self.polys]
+
+    @property
+    def square(self):
+        # the form's (a scene from a file chooses it after this is made)
+        return self.form.square
 
     def value(self, k, x):
         s = 0.0
@@ -1045,12 +1403,22 @@ def compare_scene(args, index, rng_seed):
         rec["problems"].append("the system is not rigid at the planted configuration (rank %d of %d)" % (rank, form.n))
         rec["verdict"] = "disagree"
         return rec
-    rec["variables"] = form.n
-    rec["equations"] = len(form.equations)
-    rec["left_out"] = [form.equations[k][0] for k in form.left_out]
+    return compare_formulation(args, rec, scene, form, scene_path, name, unit, rng_seed, t0)
+
+
+def compare_formulation(args, rec, scene, form, scene_path, name, unit, rng_seed, t0):
+    """Steps 3 and 4 for one scene: a generated one (form.values holds the planted
+    configuration, the square subsystem is chosen already) or one read from a file
+    (form.values is None: the square subsystem is chosen here, at the package's
+    configurations, by select_square_numeric). rng_seed seeds phc's runs."""
+    planted = form.values is not None
+    if planted:
+        rec["variables"] = form.n
+        rec["equations"] = len(form.equations)
+        rec["left_out"] = [form.equations[k][0] for k in form.left_out]
     scale = scene.scale()
-    labels = sorted(scene.world)
-    planted_pts = {l: tuple(float(c) for c in p) for l, p in scene.world.items()}
+    labels = scene.all_labels()
+    planted_pts = {l: tuple(float(c) for c in p) for l, p in scene.world.items()} if planted else None
     fsys = FloatSystem(form)
     tol = args.tolerance * scale
 
@@ -1085,11 +1453,54 @@ def compare_scene(args, index, rng_seed):
                       "no_configuration": pkg.get("no_configuration"),
                       "diagnosis": pkg.get("diagnosis"), "status": pkg["_status"]}
     if pkg.get("curves"):
-        rec["problems"].append("the package finds curves of configurations; the planted one is isolated")
-    # the planted configuration must be one of the package's
-    dmin = min((config_distance(planted_pts, p["points"], labels) for p in pkg_pts), default=float("inf"))
-    if dmin > tol:
-        rec["problems"].append("the planted configuration is not among the package's (closest at %.3g)" % dmin)
+        rec["problems"].append("the package finds curves of configurations; the planted one is isolated"
+                               if planted else "the package finds curves of configurations; phc compares "
+                               "isolated ones")
+    if planted:
+        # the planted configuration must be one of the package's
+        dmin = min((config_distance(planted_pts, p["points"], labels) for p in pkg_pts), default=float("inf"))
+        if dmin > tol:
+            rec["problems"].append("the planted configuration is not among the package's (closest at %.3g)" % dmin)
+    else:
+        # no planted configuration: the square subsystem is chosen at the package's
+        if not pkg_pts:
+            rec["problems"].append("the package gives no configuration (%s): the square subsystem of a scene "
+                                   "from a file is chosen at the package's configurations"
+                                   % (pkg.get("no_configuration") or pkg.get("diagnosis") or "none found"))
+            rec["verdict"] = "not-compared"
+            rec["t_total"] = time.time() - t0
+            return rec
+        info = form.select_square_numeric(fsys, [form.variables_from_points(p["points"]) for p in pkg_pts])
+        if not info["chosen"]:
+            rec["problems"].append("the system is not rigid at any package configuration (numerical ranks %s "
+                                   "of %d%s; each is a singular solution of the whole system, which phc "
+                                   "cannot confirm as nonsingular): no square subsystem chosen"
+                                   % (info["ranks"], form.n, "; " + "; ".join(info["choices"]) if info["choices"]
+                                      else ""))
+            rec["verdict"] = "not-compared"
+            rec["t_total"] = time.time() - t0
+            return rec
+        rec["variables"] = form.n
+        rec["equations"] = len(form.equations)
+        rec["left_out"] = [form.equations[k][0] for k in form.left_out]
+        rec["square_choice"] = info
+        for j in info["singular_at"]:
+            rec["notes"].append("package configuration %d is a singular solution of the square subsystem chosen "
+                                "(inverse condition %.3g; not of the whole system): phc may miss it"
+                                % (j, info["inverse_conditions"][j]))
+        if len(info["ranks"]) != sum(1 for r in info["ranks"] if r == form.n):
+            rec["notes"].append("numerical ranks of the whole Jacobian at the package's configurations: %s "
+                                "(of %d)" % (info["ranks"], form.n))
+        rec["system"] = system_size(form)
+        print("  %s: %d variables, %d equations (%d left out: %s); combined: %d quadratic equations (total "
+              "degree 2^%d); reduced: %d variables (total degree 2^%d); rank margins: kept >= %.3g, dropped "
+              "<= %s; square subsystem inverse condition >= %.3g"
+              % (name, form.n, len(form.equations), len(form.left_out), ", ".join(rec["left_out"]) or "none",
+                 rec["system"]["quadratic_rank"], rec["system"]["quadratic_rank"],
+                 rec["system"]["reduced_variables"], rec["system"]["reduced_variables"],
+                 info["kept_margin"], "%.3g" % info["dropped_margin"] if info["dropped_margin"] is not None
+                 else "(none dropped)", min(info["inverse_conditions"])),
+              file=sys.stderr, flush=True)
     # every package configuration must solve the system here
     for j, p in enumerate(pkg_pts):
         x0 = form.variables_from_points(p["points"])
@@ -1142,8 +1553,8 @@ def compare_scene(args, index, rng_seed):
         # enough when phc has the planted configuration and every one of the package's,
         # and as many as the package when it says complete
         found = [form.all_points(e["x"]) for e in real_ns]
-        xp = [float(v) for v in form.values]
-        if (any(max(abs(a - b) for a, b in zip(xp, e["x"])) < tol for e in real_ns) and not real_s
+        xp = [float(v) for v in form.values] if planted else None
+        if ((not planted or any(max(abs(a - b) for a, b in zip(xp, e["x"])) < tol for e in real_ns)) and not real_s
                 and all(any(config_distance(p["points"], q, labels) < tol for q in found) for p in pkg_pts)
                 and (len(real_ns) == n_pkg_cert or not rec["package"]["complete"])):
             break
@@ -1157,9 +1568,10 @@ def compare_scene(args, index, rng_seed):
     rec["phc"] = {"real_nonsingular": len(real_ns), "real_singular": len(real_s),
                   "subsystem_only": len(distinct(spurious, scale)), "paths": phc_runs[0]["paths"]}
     phc_pts = [form.all_points(e["x"]) for e in real_ns]
-    xp = [float(v) for v in form.values]
-    if not any(max(abs(a - b) for a, b in zip(xp, e["x"])) < tol for e in real_ns + real_s):
-        rec["notes"].append("phc did not find the planted configuration")
+    if planted:
+        xp = [float(v) for v in form.values]
+        if not any(max(abs(a - b) for a, b in zip(xp, e["x"])) < tol for e in real_ns + real_s):
+            rec["notes"].append("phc did not find the planted configuration")
     # matching
     pkg_unmatched = [j for j, p in enumerate(pkg_pts)
                      if not any(config_distance(p["points"], q, labels) < tol for q in phc_pts)]
@@ -1224,7 +1636,7 @@ def main():
                     help="extra phc runs with other seeds when the counts differ")
     ap.add_argument("--max-variables", type=int, default=10,
                     help="largest system given to phc (variables after the linear eliminations; "
-                         "at most 2^N paths); larger scenes are drawn again")
+                         "at most 2^N paths); larger scenes are drawn again (generated scenes only)")
     ap.add_argument("--form", choices=["combined", "reduced"], default="reduced",
                     help="the system given to phc first: the square subsystem combined to fewer "
                          "quadratic equations, or also with the linear equations eliminated "
@@ -1234,24 +1646,34 @@ def main():
                          "one of its points by 1e-3 of the scene's size) to check that this script "
                          "catches it: every scene should then disagree")
     ap.add_argument("--json", help="write every scene's record to this file")
+    ap.add_argument("--scene", action="append", metavar="FILE.json",
+                    help="compare on this existing scene file (format \"rigid-incidence-scene/1\") "
+                         "instead of generated ones; repeatable (the files in order, --scenes and "
+                         "--first ignored). No planted configuration: the square subsystem is chosen "
+                         "by the numerical rank of the Jacobian at the package's configurations. "
+                         "Scenes with \"inequalities\", a \"free_distance\" or a distance of 0 are "
+                         "refused (exit status 2)")
     args = ap.parse_args()
     os.makedirs(args.workdir, exist_ok=True)
     records = []
     t_start = time.time()
-    for i in range(args.first, args.first + args.scenes):
+    jobs = (list(enumerate(args.scene)) if args.scene
+            else [(i, None) for i in range(args.first, args.first + args.scenes)])
+    for i, path in jobs:
         scene_seed = args.seed * 1000003 + i
         try:
-            rec = compare_scene(args, i, scene_seed)
+            rec = compare_scene(args, i, scene_seed) if path is None else compare_file(args, i, path, scene_seed)
         except Exception:  # a bug here is a failure too, with the seed to rerun it
             rec = {"index": i, "seed": scene_seed, "verdict": "disagree",
                    "problems": ["exception in phc_compare.py: " + traceback.format_exc()], "notes": [],
-                   "scene": os.path.join(args.workdir, "phc_scene_%03d.json" % i), "structure": "?"}
+                   "scene": path or os.path.join(args.workdir, "phc_scene_%03d.json" % i), "structure": "?"}
         records.append(rec)
         pk = rec.get("package", {})
         ph = rec.get("phc", {})
-        print("scene %3d seed %d: %-18s package %s%s, phc %s real (%s singular, %s endpoints, %d runs), "
+        head = "scene %3d seed %d" % (i, rec["seed"]) if path is None else "file %s" % path
+        print("%s: %-18s package %s%s, phc %s real (%s singular, %s endpoints, %d runs), "
               "%d vars; %.2fs + %.2fs  [%s]"
-              % (i, rec["seed"], rec["verdict"], pk.get("certified_solutions", "?"),
+              % (head, rec["verdict"], pk.get("certified_solutions", "?"),
                  "" if pk.get("complete") else " (incomplete)", ph.get("real_nonsingular", "?"),
                  ph.get("real_singular", "?"), ph.get("paths", "?"), len(rec.get("phc_runs", [])),
                  rec.get("variables", 0),
@@ -1261,7 +1683,12 @@ def main():
             print("    problem: " + msg, file=sys.stderr)
         for msg in rec["notes"]:
             print("    note: " + msg, file=sys.stderr)
-        if rec["verdict"] != "agree":
+        if rec["verdict"] == "refused":
+            pass
+        elif rec["verdict"] != "agree" and path is not None:
+            print("    rerun: %s --tool %s --phc %s --scene %s --workdir %s"
+                  % (sys.argv[0], args.tool, args.phc, path, args.workdir), file=sys.stderr)
+        elif rec["verdict"] != "agree":
             print("    rerun: %s --tool %s --phc %s --scenes 1 --seed %d --first %d --workdir %s"
                   % (sys.argv[0], args.tool, args.phc, args.seed, i, args.workdir), file=sys.stderr)
             print("    scene file %s:" % rec["scene"], file=sys.stderr)
@@ -1285,7 +1712,9 @@ def main():
     t_phc = sum(r.get("t_phc", 0) for r in records)
     print("\nsummary (seed %d, %.1f s: package %.1f s, phc %.1f s)" % (args.seed, elapsed, t_pkg, t_phc))
     print("  %-22s %d" % ("scenes", len(records)))
-    for key in ("agree", "disagree", "package-incomplete", "phc-failure"):
+    for key in ("agree", "disagree", "package-incomplete", "phc-failure", "not-compared", "refused"):
+        if key in ("not-compared", "refused") and key not in counts:
+            continue  # (only scene files are refused or not compared)
         print("  %-22s %d" % ({"agree": "agreed", "disagree": "disagreements"}.get(key, key), counts.get(key, 0)))
     hist = {}
     for r in records:
@@ -1294,8 +1723,13 @@ def main():
     print("  real configurations per scene (phc): %s" % ", ".join("%d: %d" % kv for kv in sorted(hist.items())))
     bad = [r for r in records if r["verdict"] != "agree"]
     for r in bad:
+        if args.scene:
+            print("  file %s (%s): %s" % (r["scene"], r["verdict"], "; ".join(r["problems"] + r["notes"])))
+            continue
         print("  scene %d (seed %d, %s): %s" % (r["index"], r["seed"], r["verdict"],
                                                 "; ".join(r["problems"] + r["notes"])))
+    if any(r["verdict"] == "refused" for r in records):
+        return 2
     return 0 if not bad else 1
 
 
