@@ -533,6 +533,10 @@ int solve(const RI::Scene& scene, const RI::Rigid_body_collection<Traits>& input
     std::cout << "inequality: det(" << q.points[1] << " - " << q.points[0] << ", " << q.points[2] << " - " << q.points[0] << ", "
               << q.points[3] << " - " << q.points[0] << ") " << (q.negative ? "<= 0" : ">= 0") << "\n";
   std::cout << r.configurations.size() << " configuration(s)" << (r.curves.empty() ? "" : " and " + std::to_string(r.curves.size()) + " curve branch(es)");
+  std::size_t uncertified = 0, singular = 0;
+  for (const auto& x : r.configurations) { uncertified += !x.certified; singular += x.singular; }
+  if (uncertified) std::cout << " (" << uncertified << " not certified)";
+  if (singular) std::cout << " (" << singular << " singular)";
   if (r.complete()) std::cout << ", all certified: complete\n";
   else std::cout << "; the result is NOT complete" << (r.unresolved.empty() ? "" : " (unresolved regions below)") << "\n";
   std::size_t k = 0;

@@ -7,7 +7,7 @@
 // distance of the file, and its points must come out the same where bodies share a label
 // (they are printed once per label); its printed body poses must map the file's coordinates
 // onto the printed points.
-//   solve_json_check OUTPUT SCENE [--solutions N] [--complete true|false] [--certified N]
+//   solve_json_check OUTPUT SCENE [--solutions N] [--complete true|false] [--certified N] [--singular N]
 //                    [--diagnosis PREFIX] [--unresolved-reason SUBSTRING] [--no-solutions-count]
 //                    [--tolerance T] [--distinct D] [--coefficient-precision-at-least BITS]
 // --distinct: two solutions must differ by more than D times the scene's size (default 1e-7;
@@ -76,12 +76,13 @@ int main(int argc, char** argv)
       for (const auto& q : b.second) scale = std::max(scale, dist(p.second, q.second));
 
   const auto& sols = j["solutions"];
-  long certified = 0;
+  long certified = 0, singular = 0;
   for (std::size_t s = 0; s < sols.size(); ++s) {
     const auto& sol = sols[s];
     for (const char* k : {"certified", "parameters", "bodies", "points", "max_residual"})
       CHECK(sol.contains(k), "solution " << s << ": missing key " << k);
     if (sol.value("certified", false)) ++certified;
+    if (sol.value("singular", false)) ++singular;
     std::map<std::string, P3> pts;
     for (auto it = sol["points"].begin(); it != sol["points"].end(); ++it)
       pts[it.key()] = {it.value()[0].get<double>(), it.value()[1].get<double>(), it.value()[2].get<double>()};
@@ -149,6 +150,7 @@ int main(int argc, char** argv)
   };
   want_bool("--complete", j["complete"].get<bool>());
   if (expect.count("--solutions")) CHECK(long(sols.size()) == std::stol(expect["--solutions"]), "solutions: " << sols.size() << ", expected " << expect["--solutions"]);
+  if (expect.count("--singular")) CHECK(singular == std::stol(expect["--singular"]), "singular: " << singular << ", expected " << expect["--singular"]);
   if (expect.count("--certified")) CHECK(certified == std::stol(expect["--certified"]), "certified: " << certified << ", expected " << expect["--certified"]);
   if (expect.count("--diagnosis")) {
     std::string d = j["diagnosis"].is_null() ? std::string() : j["diagnosis"].get<std::string>();

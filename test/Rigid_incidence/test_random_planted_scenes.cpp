@@ -334,7 +334,11 @@ int main(int argc, char** argv)
       continue;
     }
     ++solved;
-    if (!r.diagnosis.empty()) { ++incomplete; continue; }  // not square, or flexes: diagnosed, not answered
+    if (!r.diagnosis.empty()) {  // not square, or flexes: diagnosed, not answered
+      ++incomplete;
+      std::cout << what << ": diagnosed: " << r.diagnosis << "\n";
+      continue;
+    }
     // the planted configuration, in the frame of b0
     double size = 0;
     for (const auto& b : gen.s.bodies)
@@ -386,6 +390,11 @@ int main(int argc, char** argv)
                           << "\n  " << to_json(gen.s, gen.frame));
     } else {
       ++incomplete;
+      // visible, not a failure: why this scene's answer is not complete
+      std::string why = !r.limits.empty() ? "limit: " + r.limits.front()
+                        : !r.unresolved.empty() ? std::to_string(r.unresolved.size()) + " unresolved region(s), the first: " + r.unresolved.front().reason
+                        : "configurations not certified";
+      std::cout << what << ": not complete (" << r.configurations.size() << " configurations; " << why << ")\n";
     }
   }
   const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

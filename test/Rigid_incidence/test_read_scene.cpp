@@ -317,8 +317,6 @@ static std::vector<Bad_case> malformed_cases()
                              {"name": "c2", "points": {"B": ["0","0","0"], "C": ["1","0","0"], "V": ["0","1","0"]}})";
   add("implied_triangle_inequality", scene(tri, R"("distances": [{"between": ["A","C"], "length": "3"}])"),
       {"'A'", "'B'", "'C'", "triangle"}, true);
-  add("implied_triangle_degenerate", scene(tri, R"("distances": [{"between": ["A","C"], "length": "2"}])"),
-      {"'A'", "'B'", "'C'"}, true);
   return v;
 }
 

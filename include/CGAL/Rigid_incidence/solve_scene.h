@@ -24,6 +24,7 @@
 #include <functional>
 #include <cmath>
 #include <array>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <type_traits>
@@ -895,10 +896,40 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
           else if (!failing.empty()) pieces.push_back(std::move(failing.front()));
         }
       }
-      for (const auto& root : res.roots) {
+      // A cluster the solver stopped as a possible multiple root: a root that is not simple
+      // is not stable under perturbation, so no interval test proves it exists. Its centre
+      // is tried as a configuration like a root: if it satisfies the original system it is
+      // returned not certified and marked singular (the answer is then not complete); else
+      // the region stays unresolved. Not along a curve of solutions (a positive-dimensional
+      // diagnosis), whose regions are points of the curve, not roots.
+      std::vector<Solver_unresolved<IT>> regions_left;
+      std::vector<std::optional<Solver_unresolved<IT>>> from_region(res.roots.size());
+      for (const auto& u : res.unresolved) {
+        if (!res.diagnosis.empty() || u.kind != Box_class::UNKNOWN || u.reason.rfind("possible multiple root", 0) != 0) {
+          regions_left.push_back(u);
+          continue;
+        }
+        Solver_root<IT> root;
+        root.certified = false;
+        root.enclosure = u.box;
+        for (const auto& e : u.box) {
+          const auto iv = CGAL::to_interval(e);
+          root.approximation.push_back(0.5 * iv.first + 0.5 * iv.second);
+        }
+        res.roots.push_back(root);
+        from_region.push_back(u);
+      }
+      for (std::size_t ri = 0; ri < res.roots.size(); ++ri) {
+        const Solver_root<IT>& root = res.roots[ri];
         ++st.roots;
         Scene_configuration s;
         s.certified = root.certified;
+        if (from_region[ri]) {
+          s.singular = true;
+          s.singular_reason = "a possible multiple root of the reduced system (" + from_region[ri]->reason + ", " +
+                              std::to_string(from_region[ri]->boxes) + " box(es)): its centre satisfies the original system, but"
+                              " a root that is not simple cannot be certified by intervals, nor told from two close roots";
+        }
         s.on_chart_border = root.on_boundary;
         s.on_inequality_boundary = root.on_inequality_boundary;
         s.charts = charts;
@@ -923,7 +954,9 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
           v.max_residual = v.residuals.max();
           const double vsize = internal::configuration_size(v.configuration);
           v.max_relative_residual = internal::relative_residual(v.residuals, vsize);
-          if (internal::verified(v.residuals, parameters.residual_threshold, vsize)) {
+          // a multiple root's centre must satisfy the system far more closely than a root's
+          // double approximation (the cluster is narrow at the solver's precision)
+          if (internal::verified(v.residuals, from_region[ri] ? (std::min)(parameters.residual_threshold, 1e-10) : parameters.residual_threshold, vsize)) {
             // two placements that put every point at the same place are one configuration
             bool same = false;
             for (const auto& w : variants_found)
@@ -934,6 +967,7 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
           }
         } while (next_nc(nc, tried));
         if (variants_found.empty()) {
+          if (from_region[ri]) { regions_left.push_back(*from_region[ri]); continue; }  // not a configuration: stays unresolved
           s = first_failed;
           if (s.residuals.mirrored && s.residuals.complete) { ++st.spurious; continue; }  // needs a reflection: not a configuration
           // not verified for another reason: say so rather than drop it
@@ -960,7 +994,7 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
         if (!merged) found.push_back({s, size});
         }
       }
-      add_regions(res.unresolved);
+      add_regions(regions_left);
       st.verify_seconds += since(t3);
     } while (internal::next_combination(charts, radix_c));
   } while (internal::next_combination(placements, radix_p));
@@ -1068,6 +1102,10 @@ coefficients at 128, then 256 bits (`Scene_solve_parameters::maximal_coefficient
 the answer is the last one, `Scene_solve_result::coefficient_precision` says at which
 precision, `precision_history` what the lower ones gave, and a positive-dimensional diagnosis
 that persists says up to which precision precision was ruled out.
+
+A region the solver stops as a "possible multiple root" whose centre satisfies the original
+system is returned as a configuration that is not certified and is marked `singular` (a root
+that is not simple cannot be certified by intervals); the answer is then not complete.
 
 A scene whose size (see below) is beyond 2^+-20 is solved scaled by a power of two, exactly,
 at unit size (the reduced system's coefficients grow as the sixth power of the size and

@@ -106,6 +106,7 @@ private:
   bool frame_explicit_;
   std::string frame_holder_; // the body whose coordinates are those of the frame body
   std::size_t implied_count_ = 0, merged_count_ = 0;
+  std::set<std::vector<std::size_t>> collinear_noted_;  // cliques on one line, noted once
 
   void note(const std::string& s) { if (log_) log_->push_back(s); }
 
@@ -550,8 +551,7 @@ private:
       for (const Body& b : bodies)
         if (std::includes(b.points.begin(), b.points.end(), k.begin(), k.end())) { inside = true; break; }
       if (inside) continue;
-      add_implied(k);
-      added = true;
+      if (add_implied(k)) added = true;
     }
     return added;
   }
@@ -568,7 +568,8 @@ private:
     return std::nullopt;
   }
 
-  void add_implied(const std::vector<std::size_t>& k)
+  // Adds the implied body of clique k; false if it is not a body (its points on one line).
+  bool add_implied(const std::vector<std::size_t>& k)
   {
     std::vector<std::string> sources;
     // A pair can be fixed (both points in one body) without its distance being known exactly
@@ -591,8 +592,16 @@ private:
                                       to_text(*dm[b][c]) + ") violate the triangle inequality: no real configuration");
         if (s == CGAL::POSITIVE) planar_nondegenerate = true;
       }
-    if (!planar_nondegenerate && complete)
-      throw Input_error(who + ": its fixed distances put all its points on one line (a degenerate body)");
+    if (!planar_nondegenerate && complete) {
+      // Points on one line are not a rigid body (they turn about the line): no body is added,
+      // and the distances stay equations of the reduced system. There they are at an extreme
+      // (a collinear triangle is the longest or flattest its sides allow), so the roots are
+      // multiple: singular configurations, not certified (solve_scene()).
+      if (collinear_noted_.insert(k).second)
+        note(who + ": its fixed distances put all its points on one line; not added as a body (a body on a line turns"
+                   " about it), its distances stay equations whose roots are multiple (singular configurations)");
+      return false;
+    }
     bool spatial = false;
     if (k.size() <= 12) {
       for (std::size_t a = 0; a < k.size(); ++a) for (std::size_t b = a + 1; b < k.size(); ++b)
@@ -634,6 +643,7 @@ private:
             if (o.contains(k[u]) && o.contains(k[v])) { add_part(b, o); break; }
     note(who + " is added as body '" + b.name + "' (from " + [&] { std::string s; for (std::size_t i = 0; i < sources.size(); ++i) s += (i ? ", " : "") + sources[i]; return s; }() + ")");
     c_.mutable_bodies().push_back(b);
+    return true;
   }
 };
 
@@ -654,7 +664,9 @@ Repeated until nothing changes:
   an exact kernel); bodies sharing 3 or more collinear points are rejected;
 - every maximal set of 3 or more points whose pairs are all at fixed distances (inside a
   body or joined by a distance) and that is not inside one body becomes an implied body,
-  after checking that its distances can be realized (Cayley-Menger determinants, exactly).
+  after checking that its distances can be realized (Cayley-Menger determinants, exactly);
+  a set whose points lie on one line is not a body (it turns about the line): it is noted,
+  and its distances stay distances (their roots are multiple: see `solve_scene()`).
   Implied bodies keep their squared distances, and the bodies and distances that imply them.
 
 Absorption and merging keep the coordinates of one body (the one holding the scene's frame,

@@ -122,7 +122,6 @@ if(TARGET rigid_incidence)
   shared_collinear_points "'c1'&&'c2'&&collinear"
   mirror_bodies "'c1'&&'c2'&&mirror"
   mirror_body_inside "'c1'&&'c2'&&mirror"
-  implied_triangle_degenerate "'A'&&'B'&&'C'"
   )
 
   _ri_table(cli_malformed_ analyze ${_ri_malformed_dir} 2 STDERR "^rigid_incidence: error: [^\n]*@CASE@\\.json: &&" _ri_malformed_table)
@@ -313,6 +312,7 @@ if(TARGET rigid_incidence)
     tetra_ineq "--solutions|2|--certified|2|--complete|true"
     tetra_i "--solutions|2|--certified|2|--complete|true|--distinct|1e-17|--coefficient-precision-at-least|128"
     tetra_i_tangent "--solutions|2|--certified|2|--complete|true|--distinct|1e-17|--coefficient-precision-at-least|128"
+    quad_collinear "--solutions|2|--certified|0|--singular|2|--complete|false"
     quad "--complete|false|--diagnosis|positive_dimensional"
     quad_symmetric "--complete|false|--diagnosis|positive_dimensional")
   list(LENGTH _ri_solve_table _n)
