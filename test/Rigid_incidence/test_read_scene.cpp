@@ -298,10 +298,6 @@ static std::vector<Bad_case> malformed_cases()
       scene(R"({"name": "c1", "points": {"A": ["0","0","0"], "B": ["1","0","0"], "C": ["0","1","0"]}},
                {"name": "c2", "points": {"A": ["0","0","0"], "B": ["2","0","0"], "D": ["0","0","1"]}})"),
       {"'c1'", "'c2'", "'A'", "'B'"}, true);
-  add("shared_collinear_points",
-      scene(R"({"name": "c1", "points": {"A": ["0","0","0"], "B": ["1","0","0"], "C": ["2","0","0"], "D": ["0","1","0"]}},
-               {"name": "c2", "points": {"A": ["0","0","0"], "B": ["0","1","0"], "C": ["0","2","0"], "E": ["0","0","1"]}})"),
-      {"'c1'", "'c2'", "collinear"}, true);
   // mirror images sharing 4 non-coplanar points (D at z = 1 and z = -1), each with a point of its own
   add("mirror_bodies",
       scene(R"({"name": "c1", "points": {"A": ["0","0","0"], "B": ["1","0","0"], "C": ["0","1","0"], "D": ["0","0","1"], "E": ["1","1","1"]}},

@@ -434,7 +434,7 @@ private:
     if (s.sign == CGAL::NEGATIVE && plan_.inconsistent.empty())
       plan_.inconsistent = "body '" + b_.name + "': the squared distances of " + who + " (" + to_text(r1) + ", " + to_text(r2) + ", " +
                            to_text(r3) + ") admit no real point (its squared height over that plane would be " + to_text(h2) + ")";
-    if (s.sign == CGAL::ZERO && singular_points_++ == 0)
+    if (s.sign == CGAL::ZERO && !rigidly_collinear(p, {s.A, s.B, s.C}) && singular_points_++ == 0)
       plan_.singular = "body '" + b_.name + "': the height of " + who + " is exactly 0 (a double placement: its two sides coincide)";
     return s;
   }
@@ -444,6 +444,27 @@ private:
     std::ostringstream os;
     os << CGAL::to_double(q);
     return os.str();
+  }
+
+  // Is p on the line of two of the references, with the three points held by one body of the
+  // collection with coordinates? Then its height 0 is that body's shape, not a coincidence of
+  // distances: p has one place, and the configuration is not a double one (an axis of three
+  // points, see standardize()).
+  bool rigidly_collinear(std::size_t p, const std::array<std::size_t, 3>& refs) const
+  {
+    const auto& K = plan_.known;
+    for (std::size_t u = 0; u < 3; ++u)
+      for (std::size_t v = u + 1; v < 3; ++v) {
+        const std::size_t q1 = refs[u], q2 = refs[v];
+        if (triangle_sign<Traits::has_exact_ft>(*K[p][q1], *K[p][q2], *K[q1][q2]) != CGAL::ZERO) continue;
+        const std::size_t g[3] = {b_.points[p], b_.points[q1], b_.points[q2]};
+        for (const Body& o : c_.bodies()) {
+          bool all = true;
+          for (std::size_t x : g) { const std::size_t l = o.local(x); all = all && l != Collection::npos && o.has_coordinates[l]; }
+          if (all) return true;
+        }
+      }
+    return false;
   }
 };
 

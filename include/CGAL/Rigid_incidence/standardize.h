@@ -107,6 +107,7 @@ private:
   std::string frame_holder_; // the body whose coordinates are those of the frame body
   std::size_t implied_count_ = 0, merged_count_ = 0;
   std::set<std::vector<std::size_t>> collinear_noted_;  // cliques on one line, noted once
+  std::set<std::pair<std::size_t, std::string>> axis_noted_;  // points left out of implied bodies, noted once
 
   void note(const std::string& s) { if (log_) log_->push_back(s); }
 
@@ -394,6 +395,30 @@ private:
     return true;
   }
 
+  static constexpr std::size_t npos_ = std::size_t(-1);
+
+  // Can the points `ps` be dropped from body b without losing anything: every point of b has
+  // coordinates (no distances, parts or orientations refer to them) and b keeps three points
+  // off a line?
+  bool droppable(const Body& b, const std::vector<std::size_t>& ps) const
+  {
+    if (!b.all_coordinates() || !b.orientations.empty() || !b.squared_distances.empty()) return false;
+    std::vector<std::size_t> keep;
+    for (std::size_t k = 0; k < b.points.size(); ++k)
+      if (std::find(ps.begin(), ps.end(), b.points[k]) == ps.end()) keep.push_back(k);
+    for (std::size_t a = 2; a < keep.size(); ++a)
+      if (!Traits::collinear(b.coordinates[keep[0]], b.coordinates[keep[1]], b.coordinates[keep[a]])) return true;
+    return false;
+  }
+
+  static void drop_point(Body& b, std::size_t p)
+  {
+    const std::size_t k = b.local(p);
+    b.points.erase(b.points.begin() + std::ptrdiff_t(k));
+    b.has_coordinates.erase(b.has_coordinates.begin() + std::ptrdiff_t(k));
+    b.coordinates.erase(b.coordinates.begin() + std::ptrdiff_t(k));
+  }
+
   bool merge_one_pair()
   {
     auto& bodies = c_.mutable_bodies();
@@ -414,10 +439,32 @@ private:
           bodies[i] = merged;
           return true;
         }
-        if (!base)
-          throw Input_error("bodies '" + bodies[i].name + "' and '" + bodies[j].name + "' share " + std::to_string(common.size()) +
-                            " collinear points (" + labels_of(c_, common) +
-                            "): they share only an axis, which must be given by exactly 2 shared points");
+        if (!base) {
+          // Collinear: they share an axis (a hinge). Its two farthest points carry it; every
+          // other shared point lies on it at the same place in both bodies (its distances to
+          // those two agree, checked above), so one body need not hold it: dropped there, the
+          // hinge is the usual pair of shared points and nothing is lost (a body that shared
+          // the point with the dropping body shares it with the other one, at the same place).
+          std::size_t u0 = 0, v0 = 1;
+          for (std::size_t u = 0; u < common.size(); ++u)
+            for (std::size_t v = u + 1; v < common.size(); ++v)
+              if (*dm[u][v] > *dm[u0][v0]) { u0 = u; v0 = v; }
+          std::vector<std::size_t> extra;
+          for (std::size_t w = 0; w < common.size(); ++w) if (w != u0 && w != v0) extra.push_back(common[w]);
+          std::size_t from = npos_;
+          for (std::size_t cand : {j, i})
+            if (from == npos_ && droppable(bodies[cand], extra)) from = cand;
+          if (from == npos_)
+            throw Input_error("bodies '" + bodies[i].name + "' and '" + bodies[j].name + "' share " + std::to_string(common.size()) +
+                              " collinear points (" + labels_of(c_, common) + "): an axis of 3 or more points is read as the hinge of"
+                              " its two farthest points only in a body with coordinates for every point; give the axis by 2 shared points");
+          for (std::size_t w : extra) drop_point(bodies[from], w);
+          note("bodies '" + bodies[i].name + "' and '" + bodies[j].name + "' share " + std::to_string(common.size()) + " collinear points (" +
+               labels_of(c_, common) + "): a hinge on its two farthest points '" + c_.label(common[u0]) + "' and '" +
+               c_.label(common[v0]) + "'; the others lie on it in both bodies and are left to '" +
+               bodies[from == i ? j : i].name + "' alone");
+          return true;
+        }
         Body merged = merge(bodies[i], bodies[j]);
         note("bodies '" + bodies[i].name + "' and '" + bodies[j].name + "' share " + std::to_string(common.size()) +
              " non-collinear points (" + labels_of(c_, common) + ") and are merged into '" + merged.name + "'");
@@ -546,7 +593,9 @@ private:
     boost::bron_kerbosch_all_cliques(g, vis, 3);
     std::sort(cliques.begin(), cliques.end());
     bool added = false;
-    for (const auto& k : cliques) {
+    for (const auto& k0 : cliques) {
+      const std::vector<std::size_t> k = without_axis_points(k0);
+      if (k.size() < 3) continue;
       bool inside = false;
       for (const Body& b : bodies)
         if (std::includes(b.points.begin(), b.points.end(), k.begin(), k.end())) { inside = true; break; }
@@ -554,6 +603,38 @@ private:
       if (add_implied(k)) added = true;
     }
     return added;
+  }
+
+  // A clique without its points that lie between two others of it on a line that one body
+  // with coordinates holds (an axis given by three points): that body places such a point, and
+  // in an implied body it would be placed at height 0 from distances alone.
+  std::vector<std::size_t> without_axis_points(std::vector<std::size_t> k)
+  {
+    bool again = true;
+    while (again) {
+      again = false;
+      for (std::size_t a = 0; a < k.size() && !again; ++a)
+        for (std::size_t u = 0; u < k.size() && !again; ++u)
+          for (std::size_t v = u + 1; v < k.size() && !again; ++v) {
+            if (u == a || v == a) continue;
+            for (const Body& o : c_.bodies()) {
+              const std::size_t la = o.local(k[a]), lu = o.local(k[u]), lv = o.local(k[v]);
+              if (la == Collection::npos || lu == Collection::npos || lv == Collection::npos) continue;
+              if (!o.has_coordinates[la] || !o.has_coordinates[lu] || !o.has_coordinates[lv]) continue;
+              const Point_3 &P = o.coordinates[la], &U = o.coordinates[lu], &V = o.coordinates[lv];
+              if (!Traits::collinear(U, P, V)) continue;
+              const FT uv = Traits::squared_distance(U, V);
+              if (Traits::squared_distance(U, P) > uv || Traits::squared_distance(P, V) > uv) continue;  // not between
+              if (axis_noted_.insert({k[a], o.name}).second)
+                note("'" + c_.label(k[a]) + "' lies between '" + c_.label(k[u]) + "' and '" + c_.label(k[v]) + "' on a line of body '" +
+                     o.name + "': left out of the implied bodies (that body places it)");
+              k.erase(k.begin() + std::ptrdiff_t(a));
+              again = true;
+              break;
+            }
+          }
+    }
+    return k;
   }
 
   std::optional<FT> fixed_squared(std::size_t p, std::size_t q, std::vector<std::string>* sources) const
@@ -661,7 +742,9 @@ Repeated until nothing changes:
   distances they share agree;
 - two bodies sharing 3 or more non-collinear points are merged (their relative placement is
   determined; with coordinates on both sides the placement is a rational map, exact with
-  an exact kernel); bodies sharing 3 or more collinear points are rejected;
+  an exact kernel); bodies sharing 3 or more collinear points share an axis: the hinge of its
+  two farthest points, the other shared points dropped from one body with coordinates (they lie
+  on the axis at the same place in both);
 - every maximal set of 3 or more points whose pairs are all at fixed distances (inside a
   body or joined by a distance) and that is not inside one body becomes an implied body,
   after checking that its distances can be realized (Cayley-Menger determinants, exactly);

@@ -119,7 +119,6 @@ if(TARGET rigid_incidence)
   shared_points_disagree_subset "'c1'&&'c2'&&'A'&&'B'"
   shared_points_disagree_merge "'c1'&&'c2'&&'A'&&'B'"
   shared_points_disagree_two "'c1'&&'c2'&&'A'&&'B'"
-  shared_collinear_points "'c1'&&'c2'&&collinear"
   mirror_bodies "'c1'&&'c2'&&mirror"
   mirror_body_inside "'c1'&&'c2'&&mirror"
   )
@@ -309,6 +308,7 @@ if(TARGET rigid_incidence)
     quad_distinct "--solutions|16|--certified|16|--complete|true"
     body_distance_through_placement "--solutions|8|--certified|8|--complete|true"
     implied_body_order "--solutions|1|--certified|1|--complete|true"
+    hinge_three_point_axis "--solutions|4|--certified|4|--complete|true"
     tetra_ineq "--solutions|2|--certified|2|--complete|true"
     tetra_i "--solutions|2|--certified|2|--complete|true|--distinct|1e-17|--coefficient-precision-at-least|128"
     tetra_i_tangent "--solutions|2|--certified|2|--complete|true|--distinct|1e-17|--coefficient-precision-at-least|128"
