@@ -171,8 +171,8 @@ static Generated grow(Rng& g, int steps, const Q& scale)
         out.structure += "axis3 ";
       }
       body(b);
-      std::string far;  // not on the axis: a distance to an axis point does not hold the turn
-      do far = placed[std::size_t(g.uniform(0, int(placed.size()) - 1))]; while (far == h[0] || far == h[1]);
+      std::string far;  // off the hinge's line (an axis point): a distance to it does not hold the turn
+      do far = placed[std::size_t(g.uniform(0, int(placed.size()) - 1))]; while (far == h[0] || far == h[1] || collinear(s.at(h[0]), s.at(h[1]), s.at(far)));
       s.add_distance(apex, far);
       for (std::size_t i = 2; i < b.size(); ++i) if (b[i] != axis) placed.push_back(b[i]);
     } else if (kind == 2) {  // ball joint: one shared point, three distances
@@ -205,7 +205,7 @@ static Generated grow(Rng& g, int steps, const Q& scale)
       for (int i = 0; i + 3 < int(p.size()); ++i) s.add_distance(p[std::size_t(i)], p[std::size_t(i + 3)]);
       // the first triangle turns about the host's hinge: one more distance to the host
       std::string far;
-      do far = placed[std::size_t(g.uniform(0, int(placed.size()) - 1))]; while (far == h[0] || far == h[1]);
+      do far = placed[std::size_t(g.uniform(0, int(placed.size()) - 1))]; while (far == h[0] || far == h[1] || collinear(s.at(h[0]), s.at(h[1]), s.at(far)));
       s.add_distance(p[2], far);
       for (std::size_t i = 2; i < p.size(); ++i) placed.push_back(p[i]);
       out.structure += "strip" + std::to_string(k) + " ";
@@ -243,7 +243,7 @@ static Generated grow(Rng& g, int steps, const Q& scale)
       if (g.uniform(0, 1)) b.push_back(fresh());
       body_with(b, compose(maps[host_index], quarter_turns(at, u, len, quarters)));
       std::string far;
-      do far = placed[std::size_t(g.uniform(0, int(placed.size()) - 1))]; while (far == h0 || far == h1);
+      do far = placed[std::size_t(g.uniform(0, int(placed.size()) - 1))]; while (far == h0 || far == h1 || collinear(s.at(h0), s.at(h1), s.at(far)));
       s.add_distance(b[2], far);
       for (std::size_t i = 2; i < b.size(); ++i) placed.push_back(b[i]);
       out.structure += "turned" + std::to_string(90 * quarters) + " ";

@@ -19,6 +19,8 @@
 // Checks: the same number of configurations, each oracle configuration matched by one of the
 // package's (same pairwise distances to 1e-7 of the size: configurations come in mirror
 // pairs through the frame's plane), all certified, complete.
+// - a flat ring of 9 (every atom in one plane): the planted configuration, a multiple root,
+//   must be among the answers, marked singular, and the answer not complete.
 
 #include <CGAL/Gmpq.h>
 #include <CGAL/Simple_cartesian.h>
@@ -112,17 +114,20 @@ typedef std::map<std::string, V> Config;
 struct Answer
 {
   std::vector<Config> configurations;
+  std::vector<bool> singular;  // per configuration
   bool complete = false, certified = true;
 };
 
-static Answer solve(const Scene& s, const std::string& frame)
+static Answer solve(const Scene& s, const std::string& frame, unsigned maximal_coefficient_precision = 256)
 {
   RI::Rigid_body_collection<Traits> input = make_collection<Traits>(s);
   input.set_frame(frame);
   RI::Rigid_body_collection<Traits> c = RI::standardize(input);
   RI::Incidence_tree t = RI::optimal_incidence_tree(c);
   RI::Well_formed_selection wf = RI::select_well_formed_incidences(c, t);
-  RI::Scene_solve_result r = RI::solve_scene<CGAL::Interval_nt<false>, CGAL::Interval_nt<false>>(input, c, t, wf, RI::Scene_solve_parameters());
+  RI::Scene_solve_parameters parameters;
+  parameters.maximal_coefficient_precision = maximal_coefficient_precision;
+  RI::Scene_solve_result r = RI::solve_scene<CGAL::Interval_nt<false>, CGAL::Interval_nt<false>>(input, c, t, wf, parameters);
   Answer a;
   a.complete = r.complete();
   for (const auto& x : r.configurations) {
@@ -133,6 +138,7 @@ static Answer solve(const Scene& s, const std::string& frame)
       m[l] = V{R(p[0]), R(p[1]), R(p[2])};
     }
     a.configurations.push_back(m);
+    a.singular.push_back(x.singular);
   }
   return a;
 }
@@ -342,6 +348,36 @@ static void ring(Rng& g, int n, int k)
   std::cout << what << ": " << got.configurations.size() << " configurations, the construction " << want.size() << "\n";
 }
 
+// A flat ring: every atom in one plane, so every torsion is at its extreme (cis or trans) and
+// the planted configuration is a multiple root (issue 27, item 2: it came out as 0
+// configurations). It must be among the answers, marked singular, and the answer not complete
+// (a multiple root is not certified). The coefficients stop at 128 bits (the test's time).
+static void flat_ring(Rng& g, int n)
+{
+  Scene s;
+  const long double pi = std::acos(-1.0L);
+  for (int i = 0; i < n; ++i) {
+    const R a = 2 * pi * i / n;
+    s.add_point(atom(i, n), QP{Q(int(std::lround(40 * std::cos(a))) + g.uniform(-2, 2), 8),
+                               Q(int(std::lround(40 * std::sin(a))) + g.uniform(-2, 2), 8), Q(0)});
+  }
+  for (int i = 0; i < n; ++i) s.add_body("b" + std::to_string(i), {atom(i - 1, n), atom(i, n), atom(i + 1, n)}, random_rigid(g));
+  for (int i = 1; i < n - 5; ++i) s.add_distance(atom(i - 1, n), atom(i + 2, n));
+  Config planted;
+  for (std::size_t i = 0; i < s.labels.size(); ++i) planted[s.labels[i]] = ld(s.global[i]);
+  const std::string what = "flat ring of " + std::to_string(n);
+  Answer got = solve(s, "b0", 128);
+  bool found = false;
+  for (std::size_t k = 0; k < got.configurations.size(); ++k)
+    if (shape_distance(shape(planted), shape(got.configurations[k])) <= 1e-5L * scene_size(s)) {
+      found = true;
+      CHECK(got.singular[k], what << ": the flat configuration is not marked singular");
+    }
+  CHECK(found, what << ": the flat configuration is missing (" << got.configurations.size() << " configurations)");
+  CHECK(!got.complete, what << ": complete, with a multiple root");
+  std::cout << what << ": " << got.configurations.size() << " configuration(s), the flat one singular\n";
+}
+
 int main(int argc, char** argv)
 {
   const int scenes = argc > 1 ? std::atoi(argv[1]) : 10;
@@ -351,6 +387,7 @@ int main(int argc, char** argv)
     chain_two(g, k);
   }
   for (int n : {9, 11, 13}) ring(g, n, 0);
+  flat_ring(g, 9);
   std::cout << "test_rigid_parts: " << scenes << " scenes of each chain, rings of 9, 11 and 13; " << failures << " failure(s)\n";
   return failures ? 1 : 0;
 }

@@ -852,7 +852,27 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
         cp.precision = parameters.solver.precision;
         cp.maximal_boxes = parameters.solver.maximal_boxes;
         auto t4 = Clock::now();
-        Curve_result<IT> cr = trace_curves<IT>(tsys, cp);
+        Curve_result<IT> cr;
+        bool zero_equation = false;
+        for (const auto& e : tsys.equations) zero_equation = zero_equation || e.is_zero();
+        if (tsys.number_of_variables() == 1 && tsys.number_of_equations() == 0 && tsys.inequalities.empty()) {
+          // one parameter and nothing left to hold (the scene turns freely about a hinge): every
+          // value is a configuration, the chart's whole range one branch (its ends on the
+          // chart's border, joined to the next chart's)
+          Solution_curve<IT> whole;
+          const int samples = 64;
+          for (int k = 0; k <= samples; ++k)
+            whole.points.push_back({tsys.box[0].first + (tsys.box[0].second - tsys.box[0].first) * k / samples});
+          whole.ends[0] = whole.ends[1] = Curve_end::BOUNDARY;
+          cr.curves.push_back(whole);
+        } else if (tsys.number_of_variables() < 2 || tsys.number_of_equations() + 1 != tsys.number_of_variables() || zero_equation) {
+          // not a curve the tracer takes: the diagnosis stands, the regions stay unresolved
+          if (positive.empty()) positive = "positive_dimensional: the reduced system's solutions are not isolated";
+          positive += "; its curve was not traced (" + std::to_string(tsys.number_of_equations()) + " equation(s) in " +
+                      std::to_string(tsys.number_of_variables()) + " variable(s) after leaving one out)";
+        } else {
+          cr = trace_curves<IT>(tsys, cp);
+        }
         st.solve_seconds += since(t4);
         st.curve_boxes += cr.statistics.boxes;
         add_regions(cr.unresolved);

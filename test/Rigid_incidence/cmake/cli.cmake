@@ -337,6 +337,14 @@ if(TARGET rigid_incidence)
                      "-DCHECK_ARGS=STDOUT_FILE|${_ri_d}/stewart_gough40.json|--solutions|40|--certified|40|--complete|true"
                      -P ${_ri_cli_script})
   endif()
+  # a scene that turns freely about an axis of three points, which the dof count calls rigid:
+  # diagnosed, not refused (trace_curves took 0 equations in 1 variable for an error)
+  add_test(NAME cli_solve_free_turn_about_axis
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${CMAKE_CURRENT_LIST_DIR}/../data/free_turn_about_axis.json|--json" -DEXPECT_RC=0
+                   "-DSTDOUT_FILE=${CMAKE_CURRENT_BINARY_DIR}/cli_solve_free_turn_about_axis.json"
+                   "-DCHECK_PROGRAM=$<TARGET_FILE:solve_json_check>"
+                   "-DCHECK_ARGS=STDOUT_FILE|${CMAKE_CURRENT_LIST_DIR}/../data/free_turn_about_axis.json|--complete|false|--diagnosis|positive_dimensional"
+                   -P ${_ri_cli_script})
   add_test(NAME cli_solve_text
            COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${_ri_d}/tetra.json" -DEXPECT_RC=0
                    "-DEXPECT_STDOUT=4 configuration\\(s\\), all certified: complete&&configuration 4: certified&&statistics: "
