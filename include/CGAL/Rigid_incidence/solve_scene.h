@@ -461,10 +461,20 @@ long dependent_equation(const Polynomial_system<NT>& sys, const Solver_result<IT
   return -1;
 }
 
-// f vanishes at every point, up to 1e-8 relative to the size of its terms there
+// f vanishes at every point, up to 1e-8 relative to the size of its terms there; or f's
+// coefficients are intervals that all contain 0 (f may be identically zero: its enclosure
+// cannot tell, and a branch kept for it is not certified anyway)
 template <class NT>
 bool vanishes_along(const Sparse_polynomial<NT>& f, const std::vector<std::vector<double>>& points)
 {
+  if constexpr (!std::is_same<NT, CGAL::Gmpq>::value) {
+    bool all_zero = true;
+    for (const auto& t : f.terms()) {
+      const auto iv = CGAL::to_interval(t.second);
+      all_zero = all_zero && iv.first <= 0 && iv.second >= 0;
+    }
+    if (all_zero) return true;
+  }
   for (const auto& x : points) {
     double value = 0, size = 0;
     for (const auto& t : f.terms()) {
@@ -891,7 +901,8 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
             q.certified = false;
             q.note = "traced without equation " + std::to_string(left_out + 1) + " (" +
                      (std::size_t(left_out) < sys.labels.size() ? sys.labels[std::size_t(left_out)] : std::string()) +
-                     "), which vanishes at every point of the branch: checked numerically, not proved";
+                     "), which vanishes at every point of the branch (or whose coefficients' enclosures all contain 0):"
+                     " checked numerically, not proved";
           }
           // one piece per combination of placements of the bodies outside the covering set that
           // holds along it; if none does, the first one, not certified (as without them)
