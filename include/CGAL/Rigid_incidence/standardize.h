@@ -395,8 +395,6 @@ private:
     return true;
   }
 
-  static constexpr std::size_t npos_ = std::size_t(-1);
-
   // Can the points `ps` be dropped from body b without losing anything: every point of b has
   // coordinates (no distances, parts or orientations refer to them) and b keeps three points
   // off a line?
@@ -451,10 +449,10 @@ private:
               if (*dm[u][v] > *dm[u0][v0]) { u0 = u; v0 = v; }
           std::vector<std::size_t> extra;
           for (std::size_t w = 0; w < common.size(); ++w) if (w != u0 && w != v0) extra.push_back(common[w]);
-          std::size_t from = npos_;
+          std::size_t from = Collection::npos;
           for (std::size_t cand : {j, i})
-            if (from == npos_ && droppable(bodies[cand], extra)) from = cand;
-          if (from == npos_)
+            if (from == Collection::npos && droppable(bodies[cand], extra)) from = cand;
+          if (from == Collection::npos)
             throw Input_error("bodies '" + bodies[i].name + "' and '" + bodies[j].name + "' share " + std::to_string(common.size()) +
                               " collinear points (" + labels_of(c_, common) + "): an axis of 3 or more points is read as the hinge of"
                               " its two farthest points only in a body with coordinates for every point; give the axis by 2 shared points");
