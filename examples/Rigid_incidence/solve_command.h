@@ -427,7 +427,7 @@ int solve(const RI::Scene& scene, const RI::Rigid_body_collection<Traits>& input
     j["coincidences"] = co;
     nlohmann::ordered_json pl = nlohmann::ordered_json::array();
     for (const auto& x : r.placements)
-      pl.push_back({{"body", x.body}, {"placements", x.placements}, {"complete", x.complete}, {"precision_bits", x.precision},
+      pl.push_back({{"body", x.body}, {"placements", x.placements}, {"complete", x.complete}, {"precision_bits", x.precision}, {"decided_exactly", x.decided_exactly},
                     {"relative_width", x.relative_width},
                     {"singular", x.singular.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(x.singular)},
                     {"inconsistent", x.inconsistent.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(x.inconsistent)},
@@ -522,7 +522,8 @@ int solve(const RI::Scene& scene, const RI::Rigid_body_collection<Traits>& input
   if (!r.no_configuration.empty()) std::cout << "no real configuration: " << r.no_configuration << "\n";
   for (const auto& x : r.placements)
     std::cout << "placements of body '" << x.body << "': " << x.placements << (x.complete ? "" : " (NOT all)") << ", enclosed at "
-              << x.precision << " bits (relative width " << std::setprecision(2) << x.relative_width << std::setprecision(10) << ")"
+              << x.precision << " bits" << (x.decided_exactly ? ", its choices decided exactly" : "") << " (relative width "
+              << std::setprecision(2) << x.relative_width << std::setprecision(10) << ")"
               << (x.singular.empty() ? "" : "; singular: " + x.singular) << "\n";
   for (const auto& l : r.limits) std::cout << "limit reached: " << l << "\n";
   if (!r.precision_history.empty()) {

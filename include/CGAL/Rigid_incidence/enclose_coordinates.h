@@ -14,6 +14,7 @@
 #include <CGAL/Rigid_incidence/internal/interval_ops.h>
 #include <CGAL/Rigid_incidence/internal/parse_number.h>
 
+#include <CGAL/CORE_Expr.h>
 #include <CGAL/Gmpq.h>
 #include <CGAL/Interval_nt.h>
 #include <CGAL/Interval_traits.h>
@@ -21,6 +22,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdlib>
 #include <deque>
 #include <limits>
 #include <memory>
@@ -162,6 +164,19 @@ struct Placement_plan
   double scale = 1;          // the body's size: its largest distance or coordinate
   double slack = 0;          // rounded input (a kernel of doubles): a relative mismatch it tolerates
 };
+
+// How many square roots a plan's exact coordinates may involve along one placement (a bound):
+// one per trilaterated point with a nonzero height, and its parts' (frames take none, see
+// Placement_frame). An exact sign of a value in such a tower costs a root bound of degree up
+// to 2^n.
+inline std::size_t square_roots(const Placement_plan& p)
+{
+  std::size_t n = 0;
+  for (const auto& s : p.steps)
+    if (s.kind == Placement_step_kind::INTERVAL || (s.kind == Placement_step_kind::EXACT && s.sign == CGAL::POSITIVE)) ++n;
+  for (const auto& q : p.parts) n += square_roots(q);
+  return n;
+}
 
 template <class Traits>
 class Placement_planner
@@ -468,23 +483,60 @@ private:
   }
 };
 
-// The rigid motion taking three points (y0, y1, y2, not on a line) to (x0, x1, x2), in
-// intervals: a point's coordinates in the basis (u, v, u x v) of the first triangle, put on
-// the same basis at the second. Exact values of congruent triangles give a rotation.
+// The frame of a placement's coordinates: a point with coordinates X is E X for a basis E.
+// Cartesian (E = I) for interval types. With exact numbers, a body placed in a canonical frame
+// uses the basis e1 = B - A, e2 = C - A, e3 = e1 x e2 of its first three points, whose Gram
+// matrix M = E^T E = [[uu, uv, 0], [uv, vv, 0], [0, 0, G]] (G = uu vv - uv^2 = det E) is
+// rational in their squared distances: a Cartesian frame needs sqrt(uu) and sqrt(G), so the
+// exact coordinates would carry two square roots per frame that no choice depends on, and
+// every exact sign test (a root bound over the whole tower) would pay for them.
+template <class W>
+struct Placement_frame
+{
+  typedef std::array<W, 3> P;
+  bool cartesian = true;
+  W uu = W(1), uv = W(0), vv = W(1), G = W(1);
+  static Placement_frame basis(const W& uu, const W& uv, const W& vv)
+  {
+    Placement_frame f;
+    f.cartesian = false;
+    f.uu = uu; f.uv = uv; f.vv = vv; f.G = uu * vv - uv * uv;
+    return f;
+  }
+  W dot(const P& a, const P& b) const
+  {
+    if (cartesian) return internal::dot(a, b);
+    return a[0] * (uu * b[0] + uv * b[1]) + a[1] * (uv * b[0] + vv * b[1]) + G * a[2] * b[2];
+  }
+  // a x b = det(E) M^-1 (a x b in coordinates) = [[vv, -uv, 0], [-uv, uu, 0], [0, 0, 1]] (a x b)
+  P cross(const P& a, const P& b) const
+  {
+    const P c = internal::cross(a, b);
+    if (cartesian) return c;
+    return {vv * c[0] - uv * c[1], uu * c[1] - uv * c[0], c[2]};
+  }
+};
+
+// The rigid motion taking three points (y0, y1, y2, not on a line, in frame fy) to (x0, x1,
+// x2, in frame fx), in intervals: a point's coordinates in the basis (u, v, u x v) of the
+// first triangle, put on the same basis at the second. Exact values of congruent triangles
+// give a rotation.
 template <class W>
 struct Interval_rigid_map
 {
   typedef std::array<W, 3> P;
+  Placement_frame<W> fy;
   P y0, u2, v2, w2, x0, u1, v1, w1;
   W uu, vv, uv, G;
-  Interval_rigid_map(const P& a, const P& b, const P& c, const P& x, const P& y, const P& z)
-    : y0(a), u2(sub(b, a)), v2(sub(c, a)), w2(cross(u2, v2)), x0(x), u1(sub(y, x)), v1(sub(z, x)), w1(cross(u1, v1)),
-      uu(dot(u2, u2)), vv(dot(v2, v2)), uv(dot(u2, v2)), G(dot(w2, w2)) {}
+  Interval_rigid_map(const P& a, const P& b, const P& c, const P& x, const P& y, const P& z,
+                     const Placement_frame<W>& from = Placement_frame<W>(), const Placement_frame<W>& to = Placement_frame<W>())
+    : fy(from), y0(a), u2(sub(b, a)), v2(sub(c, a)), w2(from.cross(u2, v2)), x0(x), u1(sub(y, x)), v1(sub(z, x)),
+      w1(to.cross(u1, v1)), uu(from.dot(u2, u2)), vv(from.dot(v2, v2)), uv(from.dot(u2, v2)), G(from.dot(w2, w2)) {}
   P operator()(const P& q) const
   {
     const P d = sub(q, y0);
-    const W du = dot(d, u2), dv = dot(d, v2);
-    const W cu = (vv * du - uv * dv) / G, cv = (uu * dv - uv * du) / G, cw = dot(d, w2) / G;
+    const W du = fy.dot(d, u2), dv = fy.dot(d, v2);
+    const W cu = (vv * du - uv * dv) / G, cv = (uu * dv - uv * du) / G, cw = fy.dot(d, w2) / G;
     P r;
     for (std::size_t c = 0; c < 3; ++c) r[c] = x0[c] + cu * u1[c] + cv * v1[c] + cw * w1[c];
     return r;
@@ -499,6 +551,10 @@ class Placement_enumerator
   typedef typename CGAL::Interval_traits<W>::Lower Lower;
   typedef typename CGAL::Interval_traits<W>::Upper Upper;
   static constexpr std::size_t none = Placement_plan::none;
+  // W = CORE::Expr: exact real algebraic numbers (a tower of square roots over the rationals),
+  // whose signs and equalities are decided exactly; the choices intervals leave open at the
+  // final precision are made with it (see cached_placements())
+  static constexpr bool exact_ = std::is_same<W, CORE::Expr>::value;
 
 public:
   Placement_enumerator(const Placement_plan& plan, std::size_t max_placements) : plan_(plan), max_(max_placements) {}
@@ -509,8 +565,9 @@ public:
     for (std::size_t j = 0; j < Pl.parts.size(); ++j) {
       Placement_enumerator<W> e(Pl.parts[j], max_);
       part_placements_.push_back(e.run());
+      part_frames_.push_back(e.frames());
       if (e.truncated()) part_truncated_ = true;  // the body is incomplete, but its list goes on
-      if (!e.undecided().empty()) note_undecided(false, "its part '" + Pl.parts[j].name + "': " + e.undecided());
+      if (!e.undecided().empty()) note_undecided(false, "its part '" + Pl.parts[j].name + "': " + e.undecided(), false);
     }
     for (const auto& s : Pl.steps) {
       if (s.kind != Placement_step_kind::EXACT) { a_.push_back(W(0)); b_.push_back(W(0)); t_.push_back(W(0)); continue; }
@@ -529,9 +586,17 @@ public:
           placed[i] = true;
         }
     } else if (Pl.start_part == none) {
-      const W l = CGAL::sqrt(from_rational(Pl.d01));
-      x_[Pl.base[1]] = P{l, W(0), W(0)};
-      x_[Pl.base[2]] = P{from_rational(Pl.c1) * l, W(CGAL::sqrt(from_rational(Pl.y2))), W(0)};
+      if constexpr (exact_) {
+        // the basis of the first three points (no square root)
+        frame_ = Placement_frame<W>::basis(from_rational(Pl.d01), from_rational(Pl.c1 * Pl.d01),
+                                           from_rational(Pl.c1 * Pl.c1 * Pl.d01 + Pl.y2));
+        x_[Pl.base[1]] = P{W(1), W(0), W(0)};
+        x_[Pl.base[2]] = P{W(0), W(1), W(0)};
+      } else {
+        const W l = CGAL::sqrt(from_rational(Pl.d01));
+        x_[Pl.base[1]] = P{l, W(0), W(0)};
+        x_[Pl.base[2]] = P{from_rational(Pl.c1) * l, W(CGAL::sqrt(from_rational(Pl.y2))), W(0)};
+      }
       for (std::size_t i : Pl.base) placed[i] = true;
     } else {
       for (std::size_t q : Pl.part_map[Pl.start_part]) if (q != none) placed[q] = true;
@@ -573,33 +638,44 @@ public:
       for (std::size_t k = 0; k < map.size(); ++k) if (map[k] != none) two.push_back(k);
       const std::size_t A = map[two[0]], B = map[two[1]], C = Pl.start_third;
       std::vector<W> lengths;
-      for (const auto& e : part_placements_[Pl.start_part]) {
+      for (std::size_t ei = 0; ei < part_placements_[Pl.start_part].size(); ++ei) {
+        const auto& e = part_placements_[Pl.start_part][ei];
         const P d = sub(e.coordinates[two[0]], e.coordinates[two[1]]);
-        const W L2 = dot(d, d);
+        const W L2 = part_frames_[Pl.start_part][ei].dot(d, d);
         bool again = false;
         for (const W& l : lengths)
-          if (internal::overlap(l, L2)) {
+          if (same(l, L2)) {
             if (narrow_enough(l, 2) && narrow_enough(L2, 2)) again = true;
             else note_undecided(false, "two lengths of '" + Pl.labels[A] + "'-'" + Pl.labels[B] + "' that its part gives are not separated");
           }
         if (again) continue;
         lengths.push_back(L2);
-        const W L = CGAL::sqrt(L2), rA = from_rational(*Pl.known[C][A]), rB = from_rational(*Pl.known[C][B]);
-        const W x = (L2 + rA - rB) / (W(2) * L), y2 = rA - x * x;
+        const W rA = from_rational(*Pl.known[C][A]), rB = from_rational(*Pl.known[C][B]);
+        const W uv = (L2 + rA - rB) / W(2), y2 = rA - uv * uv / L2;  // y2: the squared height of C over AB
         bool here_undecided = false;
         W y = W(0);
+        (void)y;  // (exact numbers use the basis of A, B and C instead)
         if (within_slack_of_zero(y2)) y = W(0);  // rounded input: on the line
         else if (negative(y2)) continue;
         else if (positive(y2)) y = CGAL::sqrt(y2);
+        else if (exact_) y = W(0);  // exactly on the line
         else {
-          y = typename CGAL::Interval_traits<W>::Hull()(W(0), CGAL::sqrt(W(Upper()(y2))));
+          y = both_sides(y2, true);
           here_undecided = true;
           note_undecided(false, "the height of '" + Pl.labels[C] + "' over the line of '" + Pl.labels[A] + "' and '" + Pl.labels[B] +
                                     "' is not separated from 0");
         }
         x_[A] = P{W(0), W(0), W(0)};
-        x_[B] = P{L, W(0), W(0)};
-        x_[C] = P{x, y, W(0)};
+        if constexpr (exact_) {
+          // the basis (B - A, C - A, ...), or, with C on the line AB, B - A and a unit vector across it
+          x_[B] = P{W(1), W(0), W(0)};
+          if (positive(y2)) { frame_ = Placement_frame<W>::basis(L2, uv, rA); x_[C] = P{W(0), W(1), W(0)}; }
+          else { frame_ = Placement_frame<W>::basis(L2, W(0), W(1)); x_[C] = P{uv / L2, W(0), W(0)}; }
+        } else {
+          const W L = CGAL::sqrt(L2);
+          x_[B] = P{L, W(0), W(0)};
+          x_[C] = P{uv / L, y, W(0)};
+        }
         if (!fits(start_checks_)) continue;
         bool ok = true;
         for (std::size_t o : initial_orientations_) if (violates(o)) { ok = false; break; }
@@ -608,7 +684,9 @@ public:
     } else {
       // the start part's placements, each in its own frame
       const auto& map = Pl.part_map[Pl.start_part];
-      for (const auto& e : part_placements_[Pl.start_part]) {
+      for (std::size_t ei = 0; ei < part_placements_[Pl.start_part].size(); ++ei) {
+        const auto& e = part_placements_[Pl.start_part][ei];
+        frame_ = part_frames_[Pl.start_part][ei];
         for (std::size_t k = 0; k < map.size(); ++k) if (map[k] != none) x_[map[k]] = e.coordinates[k];
         if (!fits(start_checks_)) continue;
         bool ok = true;
@@ -620,6 +698,8 @@ public:
   }
 
   bool truncated() const { return truncated_ || part_truncated_; }
+  /// per placement run() returned: the frame of its coordinates (Cartesian but for exact numbers)
+  const std::vector<Placement_frame<W>>& frames() const { return out_frames_; }
   /// nonempty: some placements could not be decided in this precision, and which
   std::string undecided() const
   {
@@ -638,51 +718,91 @@ private:
   std::vector<std::vector<std::size_t>> orientations_;
   std::vector<std::size_t> initial_orientations_;
   std::vector<std::vector<Body_enclosure<W>>> part_placements_;
+  std::vector<std::vector<Placement_frame<W>>> part_frames_;
   std::vector<P> x_;
+  Placement_frame<W> frame_;  // of x_
   std::vector<Body_enclosure<W>> out_;
+  std::vector<Placement_frame<W>> out_frames_;
 
   static W from_rational(const CGAL::Gmpq& q)
   {
     if constexpr (is_interval_nt<W>::value) return W(CGAL::to_interval(q));
+    else if constexpr (exact_) return W(CORE::BigRat(q.mpq()));
     else return W(q);
   }
   static bool all_placed(const std::array<std::size_t, 4>& q, const std::vector<bool>& placed)
   { return placed[q[0]] && placed[q[1]] && placed[q[2]] && placed[q[3]]; }
-  static bool positive(const W& x) { return Lower()(x) > 0; }
+  static bool positive(const W& x)
+  {
+    if constexpr (exact_) return CGAL::sign(x) == CGAL::POSITIVE;
+    else return Lower()(x) > 0;
+  }
+  // Do two numbers possibly have one value (intervals that meet; exact numbers that are equal)?
+  static bool same(const W& a, const W& b)
+  {
+    if constexpr (exact_) return CGAL::compare(a, b) == CGAL::EQUAL;
+    else return internal::overlap(a, b);
+  }
   // An enclosure narrow enough (2^-40 of the body's size, or of its square) to call two that
   // meet one value.
   bool narrow_enough(const W& x, int power = 1) const
   {
-    const double w = CGAL::to_double(Upper()(x)) - CGAL::to_double(Lower()(x));
-    return w <= std::ldexp(1.0, -40) * (power == 1 ? plan_.scale : plan_.scale * plan_.scale);
+    if constexpr (exact_) return true;
+    else {
+      const double w = CGAL::to_double(Upper()(x)) - CGAL::to_double(Lower()(x));
+      return w <= std::ldexp(1.0, -40) * (power == 1 ? plan_.scale : plan_.scale * plan_.scale);
+    }
   }
   // With rounded input: a squared length within the slack of 0 counts as 0.
   bool within_slack_of_zero(const W& x) const
   {
-    if (plan_.slack == 0) return false;
-    const double e = plan_.slack * plan_.scale * plan_.scale;
-    return CGAL::to_double(Lower()(x)) >= -e && CGAL::to_double(Upper()(x)) <= e;
+    if constexpr (exact_) return false;  // exact input only
+    else {
+      if (plan_.slack == 0) return false;
+      const double e = plan_.slack * plan_.scale * plan_.scale;
+      return CGAL::to_double(Lower()(x)) >= -e && CGAL::to_double(Upper()(x)) <= e;
+    }
   }
   // Do two enclosures meet, within the slack of rounded input (a length, or a squared one)?
   bool meet(const W& a, const W& b, int power) const
   {
-    if (plan_.slack == 0) return internal::overlap(a, b);
-    const double e = plan_.slack * (power == 1 ? plan_.scale : plan_.scale * plan_.scale);
-    return internal::overlap(a + typename CGAL::Interval_traits<W>::Hull()(W(-e), W(e)), b);
+    if constexpr (exact_) return same(a, b);
+    else {
+      if (plan_.slack == 0) return same(a, b);
+      const double e = plan_.slack * (power == 1 ? plan_.scale : plan_.scale * plan_.scale);
+      return internal::overlap(a + typename CGAL::Interval_traits<W>::Hull()(W(-e), W(e)), b);
+    }
   }
-  static bool negative(const W& x) { return Upper()(x) < 0; }
+  static bool negative(const W& x)
+  {
+    if constexpr (exact_) return CGAL::sign(x) == CGAL::NEGATIVE;
+    else return Upper()(x) < 0;
+  }
+  // An enclosure of both signs of a square root: [-sqrt(upper(S)), sqrt(upper(S))] (intervals only)
+  static W both_sides(const W& S, bool from_zero)
+  {
+    if constexpr (exact_) { CGAL_assertion(false); return W(0); }
+    else {
+      const W top = CGAL::sqrt(W(Upper()(S)));
+      return typename CGAL::Interval_traits<W>::Hull()(from_zero ? W(0) : W(-top), top);
+    }
+  }
+  // How a choice exact arithmetic makes is worded: "exactly" where intervals say "certainly".
+  static const char* certainly() { return exact_ ? "exactly" : "certainly"; }
 
-  void note_undecided(bool dropped, const std::string& what)
+  // (`consequence` false: what the part's own note says already)
+  void note_undecided(bool dropped, const std::string& what, bool consequence = true)
   {
     if (undecided_count_++ == 0)
-      undecided_ = "body '" + plan_.name + "': " + what + (dropped ? "; that placement is left out" : "; that placement is kept, enclosing both sides");
+      undecided_ = "body '" + plan_.name + "': " + what +
+                   (!consequence ? "" : dropped ? "; that placement is left out" : "; that placement is kept, enclosing both sides");
   }
 
   // Does the placement so far certainly violate orientation o?
   bool violates(std::size_t o) const
   {
     const auto& q = plan_.orient_idx[o];
-    W det = dot(cross(sub(x_[q[1]], x_[q[0]]), sub(x_[q[2]], x_[q[0]])), sub(x_[q[3]], x_[q[0]]));
+    W det = frame_.dot(frame_.cross(sub(x_[q[1]], x_[q[0]]), sub(x_[q[2]], x_[q[0]])), sub(x_[q[3]], x_[q[0]]));
     if (plan_.orient_sign[o] == CGAL::POSITIVE && negative(det)) return true;
     if (plan_.orient_sign[o] == CGAL::NEGATIVE && positive(det)) return true;
     return false;
@@ -693,31 +813,39 @@ private:
   {
     for (const auto& c : checks) {
       P d = sub(x_[c[0]], x_[c[1]]);
-      if (!meet(dot(d, d), from_rational(*plan_.known[c[0]][c[1]]), 2)) return false;
+      if (!meet(frame_.dot(d, d), from_rational(*plan_.known[c[0]][c[1]]), 2)) return false;
     }
     return true;
   }
 
   // The Gram determinant of the triangle (a, b, c) relative to its sides' lengths: a lower
   // bound (negative: not certainly a proper triangle).
-  static double flatness(const P& a, const P& b, const P& c)
+  static double flatness(const Placement_frame<W>& f, const P& a, const P& b, const P& c)
   {
     const P u = sub(b, a), v = sub(c, a);
-    const W uu = dot(u, u), vv = dot(v, v), uv = dot(u, v);
-    const double den = CGAL::to_double(Upper()(uu)) * CGAL::to_double(Upper()(vv));
-    const double g = CGAL::to_double(Lower()(uu * vv - uv * uv));
-    return den > 0 ? g / den : -1;
+    const W uu = f.dot(u, u), vv = f.dot(v, v), uv = f.dot(u, v);
+    if constexpr (exact_) {
+      const W g = uu * vv - uv * uv;
+      if (CGAL::sign(g) != CGAL::POSITIVE) return -1;
+      const double r = CGAL::to_double(g / (uu * vv));
+      return r > 0 ? r : std::numeric_limits<double>::min();  // off a line, however little
+    } else {
+      const double den = CGAL::to_double(Upper()(uu)) * CGAL::to_double(Upper()(vv));
+      const double g = CGAL::to_double(Lower()(uu * vv - uv * uv));
+      return den > 0 ? g / den : -1;
+    }
   }
 
   // Of the points `idx` (the first 8), the three farthest from a line; false if no three
   // are certainly off a line.
-  static bool widest_triangle(const std::vector<P>& x, const std::vector<std::size_t>& idx, std::array<std::size_t, 3>& r)
+  static bool widest_triangle(const Placement_frame<W>& f, const std::vector<P>& x, const std::vector<std::size_t>& idx,
+                              std::array<std::size_t, 3>& r)
   {
     double best = 0;
     const std::size_t n = (std::min)(idx.size(), std::size_t(8));
     for (std::size_t i = 0; i < n; ++i) for (std::size_t j = i + 1; j < n; ++j) for (std::size_t l = j + 1; l < n; ++l) {
-      const double f = flatness(x[idx[i]], x[idx[j]], x[idx[l]]);
-      if (f > best) { best = f; r = {idx[i], idx[j], idx[l]}; }
+      const double fl = flatness(f, x[idx[i]], x[idx[j]], x[idx[l]]);
+      if (fl > best) { best = fl; r = {idx[i], idx[j], idx[l]}; }
     }
     return best > 0;
   }
@@ -734,8 +862,8 @@ private:
       std::vector<std::size_t> g;
       for (std::size_t i = 0; i < plan_.m; ++i) if (plan_.given[i]) g.push_back(i);
       std::array<std::size_t, 3> r{{0, 0, 0}};
-      if (!widest_triangle(x_, g, r)) {
-        note_undecided(true, "its points with coordinates are not certainly off a line in a placement");
+      if (!widest_triangle(frame_, x_, g, r)) {
+        note_undecided(true, std::string("its points with coordinates are not ") + certainly() + " off a line in a placement");
         return;
       }
       auto given = [&](std::size_t i) {
@@ -743,7 +871,7 @@ private:
         for (std::size_t k = 0; k < 3; ++k) q[k] = from_rational((*plan_.given[i])[k]);
         return q;
       };
-      const Interval_rigid_map<W> motion(x_[r[0]], x_[r[1]], x_[r[2]], given(r[0]), given(r[1]), given(r[2]));
+      const Interval_rigid_map<W> motion(x_[r[0]], x_[r[1]], x_[r[2]], given(r[0]), given(r[1]), given(r[2]), frame_);
       for (std::size_t i = 0; i < plan_.m; ++i) {
         const P y = motion(x_[i]);
         if (!plan_.given[i]) { e.coordinates[i] = y; continue; }
@@ -759,6 +887,7 @@ private:
     e.singular = !plan_.singular.empty() || singular;
     e.undecided = undecided;
     out_.push_back(std::move(e));
+    out_frames_.push_back(plan_.map_to_given ? Placement_frame<W>() : frame_);
   }
 
   // After step k placed its points: its distance and orientation checks, then the next step.
@@ -801,14 +930,15 @@ private:
     std::vector<std::size_t> qs;
     for (std::size_t q = 0; q < plan_.m; ++q) if (s.distance_part[q] == j) qs.push_back(q);
     std::vector<std::vector<W>> seen;
-    for (const auto& e : part_placements_[j]) {
+    for (std::size_t ei = 0; ei < part_placements_[j].size(); ++ei) {
+      const auto& e = part_placements_[j][ei];
       std::vector<W> L;
-      for (std::size_t q : qs) { const P d = sub(e.coordinates[lp], e.coordinates[local(q)]); L.push_back(dot(d, d)); }
+      for (std::size_t q : qs) { const P d = sub(e.coordinates[lp], e.coordinates[local(q)]); L.push_back(part_frames_[j][ei].dot(d, d)); }
       bool again = false;
       for (const auto& other : seen) {
         bool same = true, narrow = true;
         for (std::size_t c = 0; c < L.size(); ++c) {
-          same = same && internal::overlap(L[c], other[c]);
+          same = same && this->same(L[c], other[c]);
           narrow = narrow && narrow_enough(L[c], 2) && narrow_enough(other[c], 2);
         }
         if (!same) continue;
@@ -835,15 +965,15 @@ private:
       double best = 0;
       bool found = false;
       for (const auto& r : s.references) {
-        double f = flatness(x_[r[0]], x_[r[1]], x_[r[2]]);
+        double f = flatness(frame_, x_[r[0]], x_[r[1]], x_[r[2]]);
         if (f > best) { best = f; A = r[0]; B = r[1]; C = r[2]; found = true; }
       }
       if (!found) {
-        note_undecided(true, "the points '" + plan_.labels[s.p] + "' is placed from are not certainly off a line");
+        note_undecided(true, "the points '" + plan_.labels[s.p] + "' is placed from are not " + certainly() + " off a line");
         return;
       }
       const P u = sub(x_[B], x_[A]), v = sub(x_[C], x_[A]);
-      const W uu = dot(u, u), vv = dot(v, v), uv = dot(u, v), G = uu * vv - uv * uv;
+      const W uu = frame_.dot(u, u), vv = frame_.dot(v, v), uv = frame_.dot(u, v), G = uu * vv - uv * uv;
       const W r1 = *r2[A], r2B = *r2[B], r3 = *r2[C];
       const W alpha = (r1 - r2B + uu) / W(2), beta = (r1 - r3 + vv) / W(2);
       a = (alpha * vv - beta * uv) / G;
@@ -852,10 +982,10 @@ private:
       if (within_slack_of_zero(H2)) { t = W(0); two_sides = false; }  // rounded input: on the plane
       else if (negative(S)) return;  // no real point on this branch
       else if (positive(S)) { t = CGAL::sqrt(S); two_sides = true; }
+      else if (exact_) { t = W(0); two_sides = false; singular = true; }  // s = 0 exactly: a double placement
       else {
         // s not separated from 0: one placement enclosing both sides (and the double point)
-        const W top = CGAL::sqrt(W(Upper()(S)));
-        t = typename CGAL::Interval_traits<W>::Hull()(-top, top);
+        t = both_sides(S, false);
         two_sides = false;
         here_undecided = true;
         note_undecided(false, "the height of '" + plan_.labels[s.p] + "' over the plane of '" + plan_.labels[A] + "', '" +
@@ -871,7 +1001,7 @@ private:
   {
     const Placement_step& s = plan_.steps[k];
     const P& XA = x_[A];
-    const P u = sub(x_[B], XA), v = sub(x_[C], XA), n = cross(u, v);
+    const P u = sub(x_[B], XA), v = sub(x_[C], XA), n = frame_.cross(u, v);
     P w;
     for (std::size_t i = 0; i < 3; ++i) w[i] = XA[i] + a * u[i] + b * v[i];
     for (int side : {1, -1}) {
@@ -896,16 +1026,19 @@ private:
       if (map[i] != none && std::find(s.places.begin(), s.places.end(), map[i]) == s.places.end()) on.push_back(i);
     std::vector<std::vector<P>> seen;
     bool checked = false;
-    for (const auto& e : part_placements_[s.part]) {
+    for (std::size_t ei = 0; ei < part_placements_[s.part].size(); ++ei) {
+      const auto& e = part_placements_[s.part][ei];
+      const Placement_frame<W>& fy = part_frames_[s.part][ei];
       const auto& y = e.coordinates;
       std::vector<P> image(map.size());
       if (on.size() >= 3) {
         std::array<std::size_t, 3> r{{0, 0, 0}};
-        if (!widest_triangle(y, on, r)) {
-          note_undecided(true, "the points it shares with its part '" + plan_.parts[s.part].name + "' are not certainly off a line");
+        if (!widest_triangle(fy, y, on, r)) {
+          note_undecided(true, "the points it shares with its part '" + plan_.parts[s.part].name + "' are not " + certainly() +
+                                   " off a line");
           continue;
         }
-        const Interval_rigid_map<W> motion(y[r[0]], y[r[1]], y[r[2]], x_[map[r[0]]], x_[map[r[1]]], x_[map[r[2]]]);
+        const Interval_rigid_map<W> motion(y[r[0]], y[r[1]], y[r[2]], x_[map[r[0]]], x_[map[r[1]]], x_[map[r[2]]], fy, frame_);
         for (std::size_t i = 0; i < map.size(); ++i) if (map[i] != none) image[i] = motion(y[i]);
       } else if (on.empty()) {
         for (std::size_t i = 0; i < map.size(); ++i) image[i] = y[i];
@@ -914,7 +1047,7 @@ private:
         bool ok = true;
         for (std::size_t i = 0; i < on.size(); ++i) for (std::size_t j = i + 1; j < on.size(); ++j) {
           P d1 = sub(x_[map[on[i]]], x_[map[on[j]]]), d2 = sub(y[on[i]], y[on[j]]);
-          if (!meet(dot(d1, d1), dot(d2, d2), 2)) ok = false;
+          if (!meet(frame_.dot(d1, d1), fy.dot(d2, d2), 2)) ok = false;
         }
         if (!ok) continue;
         for (std::size_t i : on) image[i] = x_[map[i]];
@@ -934,7 +1067,7 @@ private:
       for (const auto& other : seen) {
         bool same = true;
         for (std::size_t i = 0; i < mine.size() && same; ++i)
-          for (std::size_t c = 0; c < 3 && same; ++c) same = internal::overlap(mine[i][c], other[i][c]);
+          for (std::size_t c = 0; c < 3 && same; ++c) same = this->same(mine[i][c], other[i][c]);
         if (!same) continue;
         // overlapping enclosures are one placement only when they are narrow; else the
         // precision is raised (until then both are kept)
@@ -973,6 +1106,73 @@ double relative_width(const std::vector<Body_enclosure<W>>& all, double scale)
   return w;
 }
 
+// An enclosure in IT of an exact number: CORE's own double interval, or for a multi-precision
+// IT an interval at IT's default precision p around a rational approximation c (relative
+// precision p + 8), on the side of c where the exact sign of x - c puts x, checked exactly.
+template <class IT>
+IT enclose_exact(const CORE::Expr& x)
+{
+  if constexpr (is_interval_nt<IT>::value) return IT(CGAL::to_interval(x));
+  else {
+    const long bits = long(IT::get_default_precision());
+    const CGAL::Gmpq c(x.approx(bits + 8, CORE::extLong::getPosInfty()).BigRatValue().get_mp());
+    const CORE::Expr cx(CORE::BigRat(c.mpq()));
+    const CGAL::Sign side = CGAL::sign(x - cx);
+    if (side == CGAL::ZERO) return IT(c);
+    CGAL::Gmpq d = CGAL::abs(c);
+    for (long k = 0; k < bits; ++k) d /= 2;
+    if (CGAL::is_zero(d)) return IT(CGAL::to_interval(x));  // (not reached: c is 0 only where x is)
+    typename CGAL::Interval_traits<IT>::Hull hull;
+    while (true) {
+      const CGAL::Gmpq far = side == CGAL::POSITIVE ? c + d : c - d;
+      if (CGAL::sign(CORE::Expr(CORE::BigRat(far.mpq())) - x) == (side == CGAL::POSITIVE ? CGAL::POSITIVE : CGAL::NEGATIVE))
+        return hull(IT(c), IT(far));
+      d *= 2;
+    }
+  }
+}
+
+// An enclosure in IT with e's flags and no coordinates yet.
+template <class IT, class W>
+Body_enclosure<IT> with_flags_of(const Body_enclosure<W>& e)
+{
+  Body_enclosure<IT> f;
+  f.consistent = e.consistent;
+  f.variant = e.variant;
+  f.in_given_frame = e.in_given_frame;
+  f.singular = e.singular;
+  f.undecided = e.undecided;
+  return f;
+}
+
+// Exact placements, enclosed in IT, in Cartesian coordinates: those in the basis of a
+// canonical frame are put in the canonical frame (A at 0, B on +x, C in the xy plane,
+// y > 0): E = [[l, uv / l, 0], [0, sqrt(G) / l, 0], [0, 0, sqrt(G)]], l = sqrt(uu), in IT.
+template <class IT>
+std::vector<Body_enclosure<IT>> convert_exact_enclosures(const std::vector<Body_enclosure<CORE::Expr>>& all,
+                                                         const std::vector<Placement_frame<CORE::Expr>>& frames)
+{
+  std::vector<Body_enclosure<IT>> out;
+  for (std::size_t k = 0; k < all.size(); ++k) {
+    const auto& e = all[k];
+    const auto& fr = frames[k];
+    Body_enclosure<IT> f;
+    f = with_flags_of<IT>(e);
+    for (const auto& x : e.coordinates) {
+      std::array<IT, 3> y{{enclose_exact<IT>(x[0]), enclose_exact<IT>(x[1]), enclose_exact<IT>(x[2])}};
+      if (!fr.cartesian) {
+        const IT uu = enclose_exact<IT>(fr.uu), uv = enclose_exact<IT>(fr.uv), G = enclose_exact<IT>(fr.G);
+        Rounding_guard<IT> guard;  // (CORE itself computes in the FPU's default rounding)
+        const IT l = CGAL::sqrt(uu), g = CGAL::sqrt(G);
+        y = {l * y[0] + uv / l * y[1], g / l * y[1], g * y[2]};
+      }
+      f.coordinates.push_back(y);
+    }
+    out.push_back(std::move(f));
+  }
+  return out;
+}
+
 template <class IT, class W>
 std::vector<Body_enclosure<IT>> convert_enclosures(std::vector<Body_enclosure<W>>&& all)
 {
@@ -981,11 +1181,7 @@ std::vector<Body_enclosure<IT>> convert_enclosures(std::vector<Body_enclosure<W>
     std::vector<Body_enclosure<IT>> out;
     for (const auto& e : all) {
       Body_enclosure<IT> f;
-      f.consistent = e.consistent;
-      f.variant = e.variant;
-      f.in_given_frame = e.in_given_frame;
-      f.singular = e.singular;
-      f.undecided = e.undecided;
+      f = with_flags_of<IT>(e);
       for (const auto& x : e.coordinates) {
         std::array<IT, 3> y;
         // Gmpfi to double intervals rounds outward; double intervals into Gmpfi are exact
@@ -1045,7 +1241,26 @@ struct Placement_enumeration
   /// or, where three shared points are not certainly off a line, left out. The answer of a
   /// solve that uses this body is then not complete.
   std::string undecided;
+  /// the choices intervals left open were made in exact arithmetic (`CORE::Expr`, real
+  /// algebraic numbers): every placement is decided, its coordinates enclosed from their exact
+  /// values (see `enumerate_placements()`)
+  bool decided_exactly = false;
 };
+
+/// \ingroup PkgRigidIncidenceRef
+/// The precision, in bits, from which a choice the intervals still leave open (a height not
+/// separated from 0, two placements not separated) is made in exact arithmetic instead: a
+/// value not separated from 0 at this precision is most likely 0 exactly, which no precision
+/// separates.
+constexpr unsigned exact_decision_precision = 256;
+
+/// \ingroup PkgRigidIncidenceRef
+/// The most square roots a body's exact coordinates may involve (a bound from its placement
+/// plan: one per point trilaterated with a nonzero height, its rigid parts' included) for the
+/// choices intervals leave open to be made exactly: an exact sign that is 0 costs a root bound
+/// of degree up to 2^n (11 ran for minutes). Above it the choices stay undecided and the answer
+/// is not complete.
+constexpr std::size_t maximal_exact_square_roots = 6;
 
 /// \ingroup PkgRigidIncidenceRef
 /// The default limit on the placements of one body (2^14): a body with more is enumerated
@@ -1082,6 +1297,8 @@ std::shared_ptr<const Placement_enumeration<IT>> cached_placements(const Rigid_b
   if (plan.inconsistent.empty()) {
     const double target = is_interval_nt<IT>::value ? std::ldexp(1.0, -44) : std::ldexp(1.0, 12 - int(start));
     bool done = false;
+    const std::size_t roots = square_roots(plan);
+    const bool exact_possible = plan.slack == 0 && roots <= maximal_exact_square_roots;
     if constexpr (is_interval_nt<IT>::value) {
       typename CGAL::Interval_nt<false>::Protector protect;
       Placement_enumerator<CGAL::Interval_nt<false>> e(plan, max_placements);
@@ -1104,17 +1321,36 @@ std::shared_ptr<const Placement_enumeration<IT>> cached_placements(const Rigid_b
       out->undecided = e.undecided();
       out->placements = convert_enclosures<IT>(std::move(all));
       done = (out->relative_width <= target && out->undecided.empty()) ||
-             2 * bits > (std::max)(maximal_placement_precision, 4 * start);
+             2 * bits > (std::max)(maximal_placement_precision, 4 * start) ||
+             (!out->undecided.empty() && exact_possible && bits >= exact_decision_precision);
     }
 #endif
     (void)done;
+    if (!out->undecided.empty() && plan.slack == 0 && roots > maximal_exact_square_roots)
+      out->undecided += "; not decided exactly either: its coordinates may lie in a tower of " + std::to_string(roots) +
+                        " square roots, more than the limit of exact decisions (maximal_exact_square_roots = " +
+                        std::to_string(maximal_exact_square_roots) + ")";
+    else if (!out->undecided.empty() && plan.slack == 0) {
+      // exact input: the open choices are made exactly (a height exactly 0 is a double placement);
+      // CORE computes in the FPU's default rounding, whatever the caller's
+      CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
+      Placement_enumerator<CORE::Expr> e(plan, max_placements);
+      auto all = e.run();
+      out->complete = !e.truncated();
+      out->undecided = e.undecided();  // only what exact arithmetic leaves: three points exactly on a line
+      out->placements = convert_exact_enclosures<IT>(all, e.frames());
+      out->relative_width = relative_width(out->placements, plan.scale);
+      out->decided_exactly = true;
+      if (!out->undecided.empty()) out->undecided = "in exact arithmetic, " + out->undecided;
+    }
     // every side of some point certainly excluded by a further distance or an orientation:
     // no real placement either (interval exclusion is rigorous)
-    if (!out->undecided.empty()) out->undecided = "at " + std::to_string(out->precision) + " bits, " + out->undecided;
+    if (!out->undecided.empty() && !out->decided_exactly)
+      out->undecided = "at " + std::to_string(out->precision) + " bits, " + out->undecided;
     if (out->complete && out->placements.empty() && out->undecided.empty())
       out->inconsistent = "body '" + b.name + "': no placement fits all its distances and orientations (each side of a"
-                          " trilaterated point is excluded by a further distance or an orientation, in intervals at " +
-                          std::to_string(out->precision) + " bits)";
+                          " trilaterated point is excluded by a further distance or an orientation, " +
+                          (out->decided_exactly ? std::string("exactly") : "in intervals at " + std::to_string(out->precision) + " bits") + ")";
   }
   cache.emplace_back(key, out);
   if (cache.size() > 32) cache.pop_front();

@@ -181,7 +181,9 @@ struct Scene_placement_report
   std::string inconsistent;     ///< nonempty: no real placement (decided exactly), and why
   /// nonempty: a choice left undecided at the final precision (see
   /// `Placement_enumeration::undecided`); the result is then not complete
-  std::string undecided;
+  std::string undecided;  /// the choices intervals left open were made in exact arithmetic (see
+  /// `Placement_enumeration::decided_exactly`)
+  bool decided_exactly = false;
 };
 
 /// \ingroup PkgRigidIncidenceSolver
@@ -242,6 +244,7 @@ inline Scene_placement_report placement_report(const std::string& body, const Pl
   r.singular = e.singular;
   r.inconsistent = e.inconsistent;
   r.undecided = e.undecided;
+  r.decided_exactly = e.decided_exactly;
   return r;
 }
 

@@ -309,6 +309,7 @@ if(TARGET rigid_incidence)
     body_distance_through_placement "--solutions|8|--certified|8|--complete|true"
     implied_body_order "--solutions|1|--certified|1|--complete|true"
     hinge_three_point_axis "--solutions|4|--certified|4|--complete|true"
+    flat_hinges "--solutions|1|--certified|1|--singular|1|--complete|true"
     tetra_ineq "--solutions|2|--certified|2|--complete|true"
     tetra_i "--solutions|2|--certified|2|--complete|true|--distinct|1e-17|--coefficient-precision-at-least|128"
     tetra_i_tangent "--solutions|2|--certified|2|--complete|true|--distinct|1e-17|--coefficient-precision-at-least|128"
