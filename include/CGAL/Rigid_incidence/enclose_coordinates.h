@@ -1393,7 +1393,9 @@ once per placement of its own (enumerated the same way, recursively), which plac
 points or, with nothing left to place, checks them; and a point at known distances from
 three placed points whose own distances are not known exactly is trilaterated in intervals.
 Those decisions (a height's sign, three points off a line) are made in intervals, raised in
-precision like the widths; one still open at `maximal_placement_precision` is reported in
+precision like the widths; with exact input, those still open at `exact_decision_precision`
+are made exactly, in `CORE::Expr` (`decided_exactly`), for a body whose exact coordinates
+involve at most `maximal_exact_square_roots` square roots. One still open then is reported in
 `undecided` (the placement kept enclosing both sides, or left out), never dropped silently.
 A body with coordinates that cannot start its placement is placed in a canonical frame and
 moved onto its coordinates. With rounded input (a kernel of doubles) a placed point meets a
