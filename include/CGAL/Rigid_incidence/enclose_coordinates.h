@@ -22,7 +22,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdlib>
 #include <deque>
 #include <limits>
 #include <memory>
@@ -654,10 +653,9 @@ public:
         const W uv = (L2 + rA - rB) / W(2), y2 = rA - uv * uv / L2;  // y2: the squared height of C over AB
         bool here_undecided = false;
         W y = W(0);
-        (void)y;  // (exact numbers use the basis of A, B and C instead)
         if (within_slack_of_zero(y2)) y = W(0);  // rounded input: on the line
         else if (negative(y2)) continue;
-        else if (positive(y2)) y = CGAL::sqrt(y2);
+        else if (positive(y2)) { if constexpr (!exact_) y = CGAL::sqrt(y2); }  // (exact numbers: the basis of A, B, C)
         else if (exact_) y = W(0);  // exactly on the line
         else {
           y = both_sides(y2, true);
