@@ -34,12 +34,15 @@
 
 #include "planted_scene.h"
 
+#include <array>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <iostream>
 #include <limits>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -318,6 +321,101 @@ static double scene_error(const Scene& s, const RI::Configuration& c, double siz
   return worst;
 }
 
+// Whether the planted configuration is a singular point of the scene (independently of the
+// package): the exact rank of the Jacobian, modulo the prime 2^61 - 1, of a world-coordinate
+// formulation at the planted configuration falls short of its 3 unknowns per point. The
+// frame body's points are fixed; every other body of 3 or more points holds its base triangle
+// by 3 squared distances and each further point q at X_0 + a (X_1 - X_0) + b (X_2 - X_0) +
+// c (X_1 - X_0) x (X_2 - X_0), with a, b, c from its local coordinates (a rigid body, not a
+// framework of distances: a point in the plane of three others stays rigid); bars and distances
+// are squared-distance equations. Full rank: the planted configuration is an isolated simple
+// root, which the package must not call singular; short of it, in a complete answer of isolated
+// configurations, a multiple one, which it must.
+static bool planted_is_singular(const Scene& s, const std::string& frame)
+{
+  typedef unsigned __int128 U2;
+  const std::uint64_t P = (std::uint64_t(1) << 61) - 1;
+  auto mulm = [&](std::uint64_t a, std::uint64_t b) { return std::uint64_t((U2(a) * b) % P); };
+  auto powm = [&](std::uint64_t a, std::uint64_t e) { std::uint64_t r = 1; for (; e; e >>= 1, a = mulm(a, a)) if (e & 1) r = mulm(r, a); return r; };
+  auto modz = [&](const CGAL::Gmpz& z) {
+    CGAL::Gmpz m = z % CGAL::Gmpz(long(P));
+    if (m < 0) m += CGAL::Gmpz(long(P));
+    return std::uint64_t(mpz_get_ui(m.mpz()));
+  };
+  auto mod = [&](const Q& q) { return mulm(modz(q.numerator()), powm(modz(q.denominator()), P - 2)); };
+  const std::size_t n = 3 * s.labels.size();
+  std::vector<std::vector<Q>> rows;
+  auto add = [&](std::vector<Q>& row, int point, int k, const Q& v) { row[3 * std::size_t(point) + std::size_t(k)] += v; };
+  auto coords = [](const QP& p) { return std::array<Q, 3>{p.x, p.y, p.z}; };
+  auto distance_row = [&](int a, int b) {
+    std::vector<Q> row(n, Q(0));
+    const auto d = coords(s.global[std::size_t(a)] - s.global[std::size_t(b)]);
+    for (int k = 0; k < 3; ++k) { add(row, a, k, 2 * d[std::size_t(k)]); add(row, b, k, -2 * d[std::size_t(k)]); }
+    rows.push_back(row);
+  };
+  for (const auto& b : s.bodies) {
+    if (b.name == frame) {
+      for (int q : b.pts)
+        for (int k = 0; k < 3; ++k) { std::vector<Q> row(n, Q(0)); add(row, q, k, Q(1)); rows.push_back(row); }
+      continue;
+    }
+    if (b.pts.size() == 2) { distance_row(b.pts[0], b.pts[1]); continue; }
+    std::size_t i1 = 0, i2 = 0;  // a base triangle off a line, with point 0
+    for (std::size_t x = 1; x < b.pts.size() && i2 == 0; ++x)
+      for (std::size_t y = x + 1; y < b.pts.size() && i2 == 0; ++y)
+        if (!collinear(b.local[0], b.local[x], b.local[y])) { i1 = x; i2 = y; }
+    if (i2 == 0) throw std::logic_error("test scene: body " + b.name + " on a line");
+    distance_row(b.pts[0], b.pts[i1]);
+    distance_row(b.pts[0], b.pts[i2]);
+    distance_row(b.pts[i1], b.pts[i2]);
+    const QP ul = b.local[i1] - b.local[0], vl = b.local[i2] - b.local[0], wl = cross(ul, vl);
+    const Q det = dot(ul, cross(vl, wl));
+    const QP u = s.global[std::size_t(b.pts[i1])] - s.global[std::size_t(b.pts[0])];
+    const QP v = s.global[std::size_t(b.pts[i2])] - s.global[std::size_t(b.pts[0])];
+    // [w]x, the matrix of x -> w x x
+    auto crossm = [](const QP& w, int r, int c) {
+      const Q m[3][3] = {{0, -w.z, w.y}, {w.z, 0, -w.x}, {-w.y, w.x, 0}};
+      return m[r][c];
+    };
+    for (std::size_t i = 1; i < b.pts.size(); ++i) {
+      if (i == i1 || i == i2) continue;
+      const QP d = b.local[i] - b.local[0];
+      // d = a ul + b vl + c wl, by Cramer's rule
+      const Q a = dot(d, cross(vl, wl)) / det, bb = dot(ul, cross(d, wl)) / det, c = dot(ul, cross(vl, d)) / det;
+      for (int r = 0; r < 3; ++r) {
+        std::vector<Q> row(n, Q(0));
+        add(row, b.pts[i], r, Q(1));
+        for (int k = 0; k < 3; ++k) {
+          const Q id = r == k ? Q(1) : Q(0);
+          add(row, b.pts[0], k, -(Q(1) - a - bb) * id - c * crossm(v - u, r, k));
+          add(row, b.pts[i1], k, -a * id + c * crossm(v, r, k));
+          add(row, b.pts[i2], k, -bb * id - c * crossm(u, r, k));
+        }
+        rows.push_back(row);
+      }
+    }
+  }
+  for (const auto& d : s.distances) distance_row(d.a, d.b);
+  // rank modulo P
+  std::vector<std::vector<std::uint64_t>> m;
+  for (const auto& row : rows) { std::vector<std::uint64_t> r; for (const Q& x : row) r.push_back(mod(x)); m.push_back(r); }
+  std::size_t rank = 0;
+  for (std::size_t col = 0; col < n && rank < m.size(); ++col) {
+    std::size_t piv = rank;
+    while (piv < m.size() && m[piv][col] == 0) ++piv;
+    if (piv == m.size()) continue;
+    std::swap(m[piv], m[rank]);
+    const std::uint64_t inv = powm(m[rank][col], P - 2);
+    for (std::size_t r = 0; r < m.size(); ++r) {
+      if (r == rank || m[r][col] == 0) continue;
+      const std::uint64_t f = mulm(m[r][col], inv);
+      for (std::size_t c2 = col; c2 < n; ++c2) m[r][c2] = (m[r][c2] + P - mulm(f, m[rank][c2])) % P;
+    }
+    ++rank;
+  }
+  return rank < n;
+}
+
 int main(int argc, char** argv)
 {
   const int scenes = argc > 1 ? std::atoi(argv[1]) : 150;
@@ -325,6 +423,7 @@ int main(int argc, char** argv)
   const bool flat = argc > 3 && std::string(argv[3]) == "flat";
   const bool verbose = argc > 4;  // each scene on stderr before it is solved (to find one that takes long)
   Rng g(seed);
+  int planted_singular = 0;  // complete answers whose planted configuration is a singular point
   int solved = 0, complete = 0, incomplete = 0, refused = 0, skipped = 0, configurations = 0, on_border = 0;
   auto t0 = std::chrono::steady_clock::now();
   for (int n = 0; n < scenes; ++n) {
@@ -370,7 +469,7 @@ int main(int argc, char** argv)
     for (const auto& b : gen.s.bodies)
       for (std::size_t i = 0; i < b.local.size(); ++i)
         for (std::size_t j = i + 1; j < b.local.size(); ++j) size = std::max(size, std::sqrt(CGAL::to_double(sqdist(b.local[i], b.local[j]))));
-    bool planted = false;
+    bool planted = false, planted_singular_flag = false;
     double nearest = std::numeric_limits<double>::infinity();  // of the planted configuration, relative
     for (const auto& x : r.configurations) {
       std::string why;
@@ -393,6 +492,7 @@ int main(int argc, char** argv)
       // less well than the distance that holds it: 1.2e-6 measured, seed 3, scene 597)
       const bool same = dev <= (gen.structure.find("flat-hinge") != std::string::npos ? 1e-4 : 1e-6) * size;
       planted = planted || same;
+      if (same) planted_singular_flag = x.singular;
       if (same && x.on_chart_border) ++on_border;
     }
     configurations += int(r.configurations.size());
@@ -416,6 +516,12 @@ int main(int argc, char** argv)
       CHECK(planted, what << ": complete with " << r.configurations.size() << " configurations, without the planted one (nearest "
                           << nearest << " of the size away):" << pl.str()
                           << "\n  " << to_json(gen.s, gen.frame));
+      // singular exactly when the Jacobian at the planted configuration is short of rank
+      const bool singular = planted_is_singular(gen.s, gen.frame);
+      if (singular) ++planted_singular;
+      CHECK(!planted || planted_singular_flag == singular,
+            what << ": the planted configuration is " << (singular ? "" : "not ") << "a singular point (exact Jacobian rank), but the"
+                 << " answer calls it " << (planted_singular_flag ? "singular" : "a simple root") << "\n  " << to_json(gen.s, gen.frame));
     } else {
       ++incomplete;
       // visible, not a failure: why this scene's answer is not complete
@@ -429,7 +535,8 @@ int main(int argc, char** argv)
   std::cout << "test_random_planted_scenes: " << scenes << " scenes (seed " << seed << "): " << solved << " solved (" << complete
             << " complete, " << incomplete << " not complete or diagnosed), " << configurations << " configurations; " << refused
             << " refused, " << skipped << " not well-constrained by the count; " << on_border
-            << " planted configurations found on a chart border; " << secs << " s\n";
+            << " planted configurations found on a chart border; " << planted_singular
+            << " complete answers whose planted configuration is singular; " << secs << " s\n";
   // a regression to "everything incomplete" must not pass: on the seeds measured, all but 1 or 2
   // of 300 solved scenes are complete
   // (flat scenes: multiple roots and placements decided exactly, not counted)

@@ -105,6 +105,12 @@ public:
     /// placement of each part on its points (see `enumerate_placements()`). A part may hold
     /// points that are not points of this body; only the shared ones count.
     std::vector<Body> parts;
+    /// Sets of points (global indices, sorted) that one body with coordinates holds rigidly
+    /// although they entered this body as distances (`standardize()` merging a body it cannot
+    /// map into this one's frame). A point of such a set exactly on the line or the plane of
+    /// others of the set lies there by that body's shape, not by a coincidence of distances:
+    /// its placement is not a double one (see `enumerate_placements()`).
+    std::vector<std::vector<std::size_t>> rigid_groups;
 
     /// Local index of global point `p`, or `npos`.
     std::size_t local(std::size_t p) const

@@ -46,8 +46,11 @@ struct Body_enclosure
   int variant = 0;        ///< which placement this is (see `enclose_all_placements()`)
   bool in_given_frame = true; ///< in the frame of the body's coordinates (else a canonical frame)
   /// a double placement: a point lies exactly on the plane of the three points it is placed
-  /// from, so its two sides coincide (see `Placement_enumeration::singular`)
+  /// from (in this body or in one of its rigid parts), so its two sides coincide (see
+  /// `Placement_enumeration::singular`)
   bool singular = false;
+  /// where, when `singular`: the body and the point whose height is exactly 0
+  std::string singular_reason;
   /// the placement could not be decided at the final precision: a point's height over the
   /// plane of its references (placed through a rigid part or from inexact references) is
   /// not separated from 0, and the enclosure covers both sides (see
@@ -156,6 +159,9 @@ struct Placement_plan
   std::vector<Placement_step> steps;           // in placement order
   std::vector<std::array<std::size_t, 4>> orient_idx;
   std::vector<CGAL::Sign> orient_sign;
+  // sets of points (local indices) one body with coordinates holds rigidly: a height exactly 0
+  // among them is that body's shape, not a double placement (rigidly_degenerate())
+  std::vector<std::vector<std::size_t>> rigid_groups;
   std::vector<Placement_plan> parts;              // the plans of the body's rigid parts
   std::vector<std::vector<std::size_t>> part_map; // per part: its local index -> the body's (none: not a point of the body)
   std::string inconsistent;  // nonempty: the distances admit no placement, and why
@@ -163,6 +169,28 @@ struct Placement_plan
   double scale = 1;          // the body's size: its largest distance or coordinate
   double slack = 0;          // rounded input (a kernel of doubles): a relative mismatch it tolerates
 };
+
+// Is a height exactly 0 of p over the plane of A, B, C the shape of one body with coordinates
+// rather than a coincidence of distances? Yes when one of the plan's rigid groups holds p and
+// A, B, C (p in their plane rigidly), or p and two of them on one line with it (an axis of
+// three points, see standardize()). Then p has one place and the placement is not a double one.
+template <bool exact>
+bool rigidly_degenerate(const Placement_plan& P, std::size_t p, std::size_t A, std::size_t B, std::size_t C)
+{
+  const std::size_t r[3] = {A, B, C};
+  for (const auto& g : P.rigid_groups) {
+    auto in = [&g](std::size_t q) { return std::find(g.begin(), g.end(), q) != g.end(); };
+    if (!in(p)) continue;
+    if (in(A) && in(B) && in(C)) return true;
+    for (std::size_t u = 0; u < 3; ++u)
+      for (std::size_t v = u + 1; v < 3; ++v) {
+        const std::size_t q1 = r[u], q2 = r[v];
+        if (!in(q1) || !in(q2) || !P.known[p][q1] || !P.known[p][q2] || !P.known[q1][q2]) continue;
+        if (triangle_sign<exact>(*P.known[p][q1], *P.known[p][q2], *P.known[q1][q2]) == CGAL::ZERO) return true;
+      }
+  }
+  return false;
+}
 
 // How many square roots a plan's exact coordinates may involve along one placement (a bound):
 // one per trilaterated point with a nonzero height, and its parts' (frames take none, see
@@ -218,6 +246,20 @@ public:
     if (!(P.scale > 0) || !std::isfinite(P.scale)) P.scale = 1;
     if (!Traits::has_exact_ft) P.slack = 1e-9;  // as the side decisions below and standardize
     for (const auto& o : b_.orientations) { P.orient_idx.push_back({o.a, o.b, o.c, o.d}); P.orient_sign.push_back(o.sign); }
+    {
+      // the body's own rigid groups, and the points of each body of the collection with coordinates
+      auto local_group = [&](const std::vector<std::size_t>& global) {
+        std::vector<std::size_t> g;
+        for (std::size_t q : global) if (b_.local(q) != none) g.push_back(b_.local(q));
+        if (g.size() >= 3) P.rigid_groups.push_back(g);
+      };
+      for (const auto& g : b_.rigid_groups) local_group(g);
+      for (const Body& o : c_.bodies()) {
+        std::vector<std::size_t> g;
+        for (std::size_t k = 0; k < o.points.size(); ++k) if (o.has_coordinates[k]) g.push_back(o.points[k]);
+        local_group(g);
+      }
+    }
     for (const Body& part : b_.parts) {
       P.parts.push_back(Placement_planner<Traits>(c_, part).run());
       std::vector<std::size_t> map(part.points.size(), none);
@@ -448,7 +490,7 @@ private:
     if (s.sign == CGAL::NEGATIVE && plan_.inconsistent.empty())
       plan_.inconsistent = "body '" + b_.name + "': the squared distances of " + who + " (" + to_text(r1) + ", " + to_text(r2) + ", " +
                            to_text(r3) + ") admit no real point (its squared height over that plane would be " + to_text(h2) + ")";
-    if (s.sign == CGAL::ZERO && !rigidly_collinear(p, {s.A, s.B, s.C}) && singular_points_++ == 0)
+    if (s.sign == CGAL::ZERO && !rigidly_degenerate<Traits::has_exact_ft>(plan_, p, s.A, s.B, s.C) && singular_points_++ == 0)
       plan_.singular = "body '" + b_.name + "': the height of " + who + " is exactly 0 (a double placement: its two sides coincide)";
     return s;
   }
@@ -458,27 +500,6 @@ private:
     std::ostringstream os;
     os << CGAL::to_double(q);
     return os.str();
-  }
-
-  // Is p on the line of two of the references, with the three points held by one body of the
-  // collection with coordinates? Then its height 0 is that body's shape, not a coincidence of
-  // distances: p has one place, and the configuration is not a double one (an axis of three
-  // points, see standardize()).
-  bool rigidly_collinear(std::size_t p, const std::array<std::size_t, 3>& refs) const
-  {
-    const auto& K = plan_.known;
-    for (std::size_t u = 0; u < 3; ++u)
-      for (std::size_t v = u + 1; v < 3; ++v) {
-        const std::size_t q1 = refs[u], q2 = refs[v];
-        if (triangle_sign<Traits::has_exact_ft>(*K[p][q1], *K[p][q2], *K[q1][q2]) != CGAL::ZERO) continue;
-        const std::size_t g[3] = {b_.points[p], b_.points[q1], b_.points[q2]};
-        for (const Body& o : c_.bodies()) {
-          bool all = true;
-          for (std::size_t x : g) { const std::size_t l = o.local(x); all = all && l != Collection::npos && o.has_coordinates[l]; }
-          if (all) return true;
-        }
-      }
-    return false;
   }
 };
 
@@ -629,7 +650,7 @@ public:
     }
     if (Pl.start_part == none) {
       for (std::size_t o : initial_orientations_) if (violates(o)) return out_;
-      place(0, false, false);
+      place(0, std::string(), false);
     } else if (Pl.start_third != none) {
       // a segment from each placement of the start part (each length once), then the third point
       const auto& map = Pl.part_map[Pl.start_part];
@@ -677,7 +698,7 @@ public:
         if (!fits(start_checks_)) continue;
         bool ok = true;
         for (std::size_t o : initial_orientations_) if (violates(o)) { ok = false; break; }
-        if (ok) place(0, e.singular, e.undecided || here_undecided);
+        if (ok) place(0, e.singular_reason, e.undecided || here_undecided);
       }
     } else {
       // the start part's placements, each in its own frame
@@ -689,7 +710,7 @@ public:
         if (!fits(start_checks_)) continue;
         bool ok = true;
         for (std::size_t o : initial_orientations_) if (violates(o)) { ok = false; break; }
-        if (ok) place(0, e.singular, e.undecided);
+        if (ok) place(0, e.singular_reason, e.undecided);
       }
     }
     return out_;
@@ -848,7 +869,7 @@ private:
     return best > 0;
   }
 
-  void emit(bool singular, bool undecided)
+  void emit(const std::string& singular, bool undecided)
   {
     if (out_.size() >= max_) { truncated_ = true; return; }
     Body_enclosure<W> e;
@@ -882,14 +903,23 @@ private:
     }
     e.variant = int(out_.size());
     e.consistent = true;
-    e.singular = !plan_.singular.empty() || singular;
+    e.singular_reason = also(plan_.singular, singular);
+    e.singular = !e.singular_reason.empty();
     e.undecided = undecided;
     out_.push_back(std::move(e));
     out_frames_.push_back(plan_.map_to_given ? Placement_frame<W>() : frame_);
   }
 
+  // Two reasons for a double placement, each said once.
+  static std::string also(const std::string& a, const std::string& b)
+  {
+    if (a.empty() || b.find(a) != std::string::npos) return b;
+    if (b.empty() || a.find(b) != std::string::npos) return a;
+    return a + "; " + b;
+  }
+
   // After step k placed its points: its distance and orientation checks, then the next step.
-  void next(std::size_t k, bool singular, bool undecided)
+  void next(std::size_t k, const std::string& singular, bool undecided)
   {
     if (!fits(checks_[k])) return;
     for (std::size_t o : orientations_[k]) if (violates(o)) return;
@@ -899,7 +929,7 @@ private:
   // Depth first over the sides of each step and the placements of each part: a choice is
   // kept unless a known distance or an orientation certainly excludes it; a step with s = 0
   // has one side.
-  void place(std::size_t k, bool singular, bool undecided)
+  void place(std::size_t k, const std::string& singular, bool undecided)
   {
     if (truncated_) return;
     const auto& steps = plan_.steps;
@@ -917,7 +947,8 @@ private:
 
   // The distances of an interval step that rigid parts fix: the product of their placements
   // (placements giving the same lengths count once), then the trilateration.
-  void with_part_distances(std::size_t k, std::size_t i, std::vector<std::optional<W>>& r2, bool singular, bool undecided)
+  void with_part_distances(std::size_t k, std::size_t i, std::vector<std::optional<W>>& r2, const std::string& singular,
+                           bool undecided)
   {
     const Placement_step& s = plan_.steps[k];
     if (i == s.distance_parts.size()) { interval_step(k, r2, singular, undecided); return; }
@@ -947,13 +978,13 @@ private:
       if (again) continue;
       seen.push_back(L);
       for (std::size_t c = 0; c < qs.size(); ++c) r2[qs[c]] = L[c];
-      with_part_distances(k, i + 1, r2, singular || e.singular, undecided || e.undecided);
+      with_part_distances(k, i + 1, r2, also(singular, e.singular_reason), undecided || e.undecided);
     }
   }
 
   // A trilateration from placed points whose distances are not all known exactly: the
   // reference triple farthest from a line, then a, b and s from the placed points.
-  void interval_step(std::size_t k, const std::vector<std::optional<W>>& r2, bool singular, bool undecided)
+  void interval_step(std::size_t k, const std::vector<std::optional<W>>& r2, std::string singular, bool undecided)
   {
     const Placement_step& s = plan_.steps[k];
     std::size_t A = 0, B = 0, C = 0;
@@ -980,7 +1011,14 @@ private:
       if (within_slack_of_zero(H2)) { t = W(0); two_sides = false; }  // rounded input: on the plane
       else if (negative(S)) return;  // no real point on this branch
       else if (positive(S)) { t = CGAL::sqrt(S); two_sides = true; }
-      else if (exact_) { t = W(0); two_sides = false; singular = true; }  // s = 0 exactly: a double placement
+      else if (exact_) {  // s = 0 exactly: a double placement, unless a body with coordinates holds p there
+        t = W(0);
+        two_sides = false;
+        if (!rigidly_degenerate<true>(plan_, s.p, A, B, C))
+          singular = also(singular, "body '" + plan_.name + "': the height of '" + plan_.labels[s.p] + "' over the plane of '" +
+                                      plan_.labels[A] + "', '" + plan_.labels[B] + "' and '" + plan_.labels[C] +
+                                      "' is exactly 0 (a double placement: its two sides coincide)");
+      }
       else {
         // s not separated from 0: one placement enclosing both sides (and the double point)
         t = both_sides(S, false);
@@ -995,7 +1033,7 @@ private:
 
   // Point p of step k at X_A + a (X_B - X_A) + b (X_C - X_A) +- t (X_B - X_A) x (X_C - X_A).
   void trilaterate(std::size_t k, std::size_t A, std::size_t B, std::size_t C, const W& a, const W& b, const W& t,
-                   bool two_sides, bool singular, bool undecided)
+                   bool two_sides, const std::string& singular, bool undecided)
   {
     const Placement_step& s = plan_.steps[k];
     const P& XA = x_[A];
@@ -1015,7 +1053,7 @@ private:
   // that takes three of them (the farthest from a line) to their places maps the others;
   // a placement whose images miss a placed point is excluded. Two placements of the part
   // that put the body's points at the same places count once.
-  void superpose(std::size_t k, bool singular, bool undecided)
+  void superpose(std::size_t k, const std::string& singular, bool undecided)
   {
     const Placement_step& s = plan_.steps[k];
     const auto& map = plan_.part_map[s.part];
@@ -1056,7 +1094,7 @@ private:
       if (!ok) continue;
       if (s.places.empty()) {
         // a check: one fitting placement is enough (it places nothing)
-        if (!checked) { checked = true; place(k + 1, singular || e.singular, undecided || e.undecided); }
+        if (!checked) { checked = true; place(k + 1, also(singular, e.singular_reason), undecided || e.undecided); }
         continue;
       }
       std::vector<P> mine;
@@ -1079,7 +1117,7 @@ private:
       seen.push_back(mine);
       for (std::size_t i = 0; i < map.size(); ++i)
         if (map[i] != none && std::find(s.places.begin(), s.places.end(), map[i]) != s.places.end()) x_[map[i]] = image[i];
-      next(k, singular || e.singular, undecided || e.undecided);
+      next(k, also(singular, e.singular_reason), undecided || e.undecided);
     }
   }
 };
@@ -1139,6 +1177,7 @@ Body_enclosure<IT> with_flags_of(const Body_enclosure<W>& e)
   f.variant = e.variant;
   f.in_given_frame = e.in_given_frame;
   f.singular = e.singular;
+  f.singular_reason = e.singular_reason;
   f.undecided = e.undecided;
   return f;
 }
@@ -1209,6 +1248,11 @@ std::string placement_key(const Rigid_body_collection<Traits>& c, const typename
   }
   for (const auto& d : b.squared_distances) os << d.a << '-' << d.b << ' ' << exact_rational(d.squared) << '\n';
   for (const auto& o : b.orientations) os << o.a << ' ' << o.b << ' ' << o.c << ' ' << o.d << ' ' << int(o.sign) << '\n';
+  for (const auto& g : b.rigid_groups) {
+    os << "rigid";
+    for (std::size_t q : g) field(c.label(q));
+    os << '\n';
+  }
   for (const auto& part : b.parts) field(placement_key(c, part));
   return os.str();
 }

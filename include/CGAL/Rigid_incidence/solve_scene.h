@@ -644,6 +644,12 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
   auto t0 = Clock::now();
   std::vector<std::string> singular_body;
   std::vector<int> radix_p = internal::placement_counts(c, tree, parameters.maximal_placements, &out.placements, &singular_body);
+  // per body known by distances: its placements, whose own double points (in a rigid part, or
+  // a height found exactly 0 by the exact pass) make the configurations that use them singular
+  std::vector<std::shared_ptr<const Placement_enumeration<CGAL::Interval_nt<false>>>> enumerations(c.number_of_bodies());
+  for (std::size_t b = 0; b < c.number_of_bodies(); ++b)
+    if (!c.body(b).all_coordinates())
+      enumerations[b] = internal::cached_placements<CGAL::Interval_nt<false>>(c, b, parameters.maximal_placements);
   for (const auto& r : out.placements) {
     if (!r.complete)
       out.limits.push_back("body '" + r.body + "' has more than " + std::to_string(r.placements) +
@@ -983,6 +989,15 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
         do {
           Scene_configuration v = s;
           for (std::size_t k = 0; k < nc_bodies.size(); ++k) v.placements[nc_bodies[k]] = nc[k];
+          for (std::size_t b = 0; b < enumerations.size(); ++b) {
+            if (!enumerations[b] || !singular_body[b].empty()) continue;  // none, or said for every placement
+            const auto& list = enumerations[b]->placements;
+            const std::size_t i = b < v.placements.size() ? std::size_t(v.placements[b]) : 0;
+            if (i < list.size() && list[i].singular && v.singular_reason.find(list[i].singular_reason) == std::string::npos) {
+              v.singular = true;
+              v.singular_reason += (v.singular_reason.empty() ? "" : "; ") + list[i].singular_reason;
+            }
+          }
           v.configuration = configuration(r, root.approximation, v.placements);
           v.residuals = residuals(original, v.configuration);
           v.max_residual = v.residuals.max();

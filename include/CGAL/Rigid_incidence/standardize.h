@@ -328,6 +328,14 @@ private:
       for (const auto& o : b->orientations)
         m.orientations.push_back(Orientation{m.local(b->points[o.a]), m.local(b->points[o.b]), m.local(b->points[o.c]),
                                              m.local(b->points[o.d]), o.sign});
+    // the sets each side holds rigidly; O's points with coordinates too, when they enter as distances
+    for (const Body* b : {&P, &O})
+      for (const auto& g : b->rigid_groups) add_rigid_group(m, g);
+    if (!mapped) {
+      std::vector<std::size_t> g;
+      for (std::size_t k = 0; k < O.points.size(); ++k) if (O.has_coordinates[k]) g.push_back(O.points[k]);
+      add_rigid_group(m, g);
+    }
     if (!mapped) {
       if (auto q = spanning_quadruple(O))
         m.orientations.push_back(Orientation{m.local(O.points[(*q)[0]]), m.local(O.points[(*q)[1]]), m.local(O.points[(*q)[2]]),
@@ -349,6 +357,13 @@ private:
     else for (const Body& x : O.parts) add_part(m, x);
     m.mirror_variants = m.all_coordinates() ? 1 : 0; // 0: enumerate with enclose_all_placements()
     return m;
+  }
+
+  static void add_rigid_group(Body& m, const std::vector<std::size_t>& g)
+  {
+    if (g.size() < 3) return;  // two points are a distance
+    for (const auto& h : m.rigid_groups) if (std::includes(h.begin(), h.end(), g.begin(), g.end())) return;
+    m.rigid_groups.push_back(g);
   }
 
   // (a part once: by content, since a body keeps its name when it absorbs another)
@@ -395,26 +410,84 @@ private:
     return true;
   }
 
-  // Can the points `ps` be dropped from body b without losing anything: every point of b has
-  // coordinates (no distances, parts or orientations refer to them) and b keeps three points
-  // off a line?
-  bool droppable(const Body& b, const std::vector<std::size_t>& ps) const
+  // Drops the points `ps`, which lie on the axis through the global points u and v strictly
+  // between or beyond them, from body b, if nothing is lost: each such point w sits on the
+  // axis at a parameter t (w = u + t (v - u)) that the squared distances a = |uw|^2,
+  // e = |wv|^2, c = |uv|^2 fix rationally, t = (a + c - e) / 2c (w is on the line), and by
+  // Stewart's theorem a point X of b satisfies
+  //   |Xw|^2 = (1 - t) |Xu|^2 + t |Xv|^2 - t (1 - t) c,
+  // so a distance X-w of b says as much as the one of X-u, X-v it completes (added to b when
+  // b lacks it; checked when b has both). Not dropped (false, b unchanged) when a handedness
+  // (orientation) or a rigid part holds such a point, or when b knows neither X-u nor X-v for
+  // a distance X-w; *why says which. Throws No_real_configuration when the distances of b
+  // contradict the axis.
+  // `axis_squared(p, q)` is the squared distance of two axis points (known to both bodies).
+  template <class Axis_squared>
+  bool drop_axis_points(Body& b, const std::vector<std::size_t>& ps, std::size_t u, std::size_t v, const Axis_squared& axis_squared,
+                        std::string* why)
   {
-    if (!b.all_coordinates() || !b.orientations.empty() || !b.squared_distances.empty()) return false;
-    std::vector<std::size_t> keep;
-    for (std::size_t k = 0; k < b.points.size(); ++k)
-      if (std::find(ps.begin(), ps.end(), b.points[k]) == ps.end()) keep.push_back(k);
-    for (std::size_t a = 2; a < keep.size(); ++a)
-      if (!Traits::collinear(b.coordinates[keep[0]], b.coordinates[keep[1]], b.coordinates[keep[a]])) return true;
-    return false;
-  }
-
-  static void drop_point(Body& b, std::size_t p)
-  {
-    const std::size_t k = b.local(p);
-    b.points.erase(b.points.begin() + std::ptrdiff_t(k));
-    b.has_coordinates.erase(b.has_coordinates.begin() + std::ptrdiff_t(k));
-    b.coordinates.erase(b.coordinates.begin() + std::ptrdiff_t(k));
+    for (std::size_t w : ps) {
+      for (const Body& part : b.parts)
+        if (part.contains(w)) { *why = "its rigid part '" + part.name + "' holds '" + c_.label(w) + "'"; return false; }
+      for (const Orientation& o : b.orientations)
+        for (std::size_t q : {o.a, o.b, o.c, o.d})
+          if (b.points[q] == w) { *why = "the handedness it keeps involves '" + c_.label(w) + "'"; return false; }
+    }
+    const std::size_t lu = b.local(u), lv = b.local(v);
+    const FT c = axis_squared(u, v);
+    std::vector<Squared_distance> added;
+    for (std::size_t w : ps) {
+      const std::size_t lw = b.local(w);
+      const FT t = (axis_squared(u, w) + c - axis_squared(w, v)) / (FT(2) * c);
+      for (std::size_t x = 0; x < b.points.size(); ++x) {
+        if (x == lu || x == lv || std::find(ps.begin(), ps.end(), b.points[x]) != ps.end()) continue;
+        if (b.has_coordinates[x] && b.has_coordinates[lw]) continue;  // no distance X-w is stored
+        const std::optional<FT> xw = b.squared(x, lw);
+        if (!xw) continue;
+        std::optional<FT> xu = b.squared(x, lu), xv = b.squared(x, lv);
+        for (const Squared_distance& d : added)
+          if (d.a == x) (d.b == lu ? xu : xv) = d.squared;
+        const std::string at = "body '" + b.name + "': '" + c_.label(b.points[x]) + "'";
+        if (xu && xv) {
+          if (!c_.same_value((FT(1) - t) * *xu + t * *xv - t * (FT(1) - t) * c, *xw))
+            throw No_real_configuration(at + " is at squared distances " + to_text(*xu) + ", " + to_text(*xv) + " and " + to_text(*xw) +
+                                        " from '" + c_.label(u) + "', '" + c_.label(v) + "' and '" + c_.label(w) +
+                                        "', three points on one line, which no real point is (Stewart's theorem)");
+          continue;
+        }
+        if (!xu && !xv) {
+          *why = "'" + c_.label(b.points[x]) + "' is held at a distance from '" + c_.label(w) + "' and from neither '" + c_.label(u) +
+                 "' nor '" + c_.label(v) + "'";
+          return false;
+        }
+        // t is neither 0 nor 1: w is none of u, v.
+        const FT missing = xu ? (*xw - (FT(1) - t) * *xu + t * (FT(1) - t) * c) / t : (*xw - t * *xv + t * (FT(1) - t) * c) / (FT(1) - t);
+        if (CGAL::is_negative(missing))
+          throw No_real_configuration(at + " is at squared distance " + to_text(*xw) + " from '" + c_.label(w) + "' and " +
+                                      to_text(xu ? *xu : *xv) + " from '" + c_.label(xu ? u : v) + "', which puts its squared distance"
+                                      " from '" + c_.label(xu ? v : u) + "' (on the same line) at " + to_text(missing) + " < 0");
+        added.push_back(Squared_distance{x, xu ? lv : lu, missing});
+      }
+    }
+    b.squared_distances.insert(b.squared_distances.end(), added.begin(), added.end());
+    for (std::size_t w : ps) {
+      const std::size_t k = b.local(w);
+      std::vector<Squared_distance> kept;
+      for (Squared_distance d : b.squared_distances) {
+        if (d.a == k || d.b == k) continue;
+        if (d.a > k) --d.a;
+        if (d.b > k) --d.b;
+        kept.push_back(d);
+      }
+      b.squared_distances = std::move(kept);
+      for (Orientation& o : b.orientations)
+        for (std::size_t* q : {&o.a, &o.b, &o.c, &o.d}) if (*q > k) --*q;
+      b.points.erase(b.points.begin() + std::ptrdiff_t(k));
+      b.has_coordinates.erase(b.has_coordinates.begin() + std::ptrdiff_t(k));
+      b.coordinates.erase(b.coordinates.begin() + std::ptrdiff_t(k));
+      for (auto& g : b.rigid_groups) g.erase(std::remove(g.begin(), g.end(), w), g.end());
+    }
+    return true;
   }
 
   bool merge_one_pair()
@@ -450,13 +523,21 @@ private:
           std::vector<std::size_t> extra;
           for (std::size_t w = 0; w < common.size(); ++w) if (w != u0 && w != v0) extra.push_back(common[w]);
           std::size_t from = Collection::npos;
+          std::string why[2];
+          auto axis_squared = [&](std::size_t p, std::size_t q) {
+            const std::size_t a = std::size_t(std::find(common.begin(), common.end(), p) - common.begin());
+            const std::size_t e = std::size_t(std::find(common.begin(), common.end(), q) - common.begin());
+            return *dm[a][e];
+          };
           for (std::size_t cand : {j, i})
-            if (from == Collection::npos && droppable(bodies[cand], extra)) from = cand;
+            if (from == Collection::npos && drop_axis_points(bodies[cand], extra, common[u0], common[v0], axis_squared, &why[cand == i]))
+              from = cand;
           if (from == Collection::npos)
             throw Input_error("bodies '" + bodies[i].name + "' and '" + bodies[j].name + "' share " + std::to_string(common.size()) +
-                              " collinear points (" + labels_of(c_, common) + "): an axis of 3 or more points is read as the hinge of"
-                              " its two farthest points only in a body with coordinates for every point; give the axis by 2 shared points");
-          for (std::size_t w : extra) drop_point(bodies[from], w);
+                              " collinear points (" + labels_of(c_, common) + "), an axis; it is the hinge of its two farthest points '" +
+                              c_.label(common[u0]) + "' and '" + c_.label(common[v0]) + "' once one body leaves the others out, which"
+                              " neither can: in '" + bodies[j].name + "', " + why[0] + "; in '" + bodies[i].name + "', " + why[1] +
+                              " (give the axis by 2 shared points)");
           note("bodies '" + bodies[i].name + "' and '" + bodies[j].name + "' share " + std::to_string(common.size()) + " collinear points (" +
                labels_of(c_, common) + "): a hinge on its two farthest points '" + c_.label(common[u0]) + "' and '" +
                c_.label(common[v0]) + "'; the others lie on it in both bodies and are left to '" +
@@ -741,8 +822,11 @@ Repeated until nothing changes:
 - two bodies sharing 3 or more non-collinear points are merged (their relative placement is
   determined; with coordinates on both sides the placement is a rational map, exact with
   an exact kernel); bodies sharing 3 or more collinear points share an axis: the hinge of its
-  two farthest points, the other shared points dropped from one body with coordinates (they lie
-  on the axis at the same place in both);
+  two farthest points, the other shared points dropped from one of the bodies (they lie on the
+  axis at the same place in both; a body that knows such a point by distances gets, by
+  Stewart's theorem, the distances to the axis's ends they imply), refused only when neither
+  body can drop them (a rigid part or a handedness holds one, or a distance to it has no
+  counterpart to either end);
 - every maximal set of 3 or more points whose pairs are all at fixed distances (inside a
   body or joined by a distance) and that is not inside one body becomes an implied body,
   after checking that its distances can be realized (Cayley-Menger determinants, exactly);
