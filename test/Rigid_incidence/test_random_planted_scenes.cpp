@@ -6,7 +6,8 @@
 // attachments that keep the dof count at 0: a body on a hinge (2 shared points) closed by a
 // distance, a body on a ball joint (1 shared point) held by 3 distances (or a 5-point body,
 // two of the distances from one of its points), a body sharing 3
-// points (merged), a braced triangle strip, a free point held by 3 distances, a body turned
+// points (merged; or a flat plate, its fourth point in their plane), a point on the line of
+// two others held by its distances to them and a bar (a double point), a braced triangle strip, a free point held by 3 distances, a body turned
 // from its host by 0, a quarter, a half or three quarters of a turn about a hinge (roots at a
 // chart's centre, on chart borders, at half turns); some with a near-degenerate apex (1e-5
 // off its hinge), some scaled by 10^k, |k| <= 50 (issue 27, item 8). Every body is cut out of
@@ -146,7 +147,10 @@ static Generated grow(Rng& g, int steps, const Q& scale, bool flat = false)
   out.frame = "b0";
   placed = root;
   for (int st = 0; st < steps; ++st) {
-    const int kind = g.uniform(0, 6);
+    // (a rail point, kind 8, one draw in three: through rigid parts its height 0 is often left
+    // undecided, at 4096 bits, which costs seconds)
+    int kind = g.uniform(0, 8);
+    if (kind == 8 && g.uniform(0, 2) != 0) kind = 7;
     const std::size_t host_index = std::size_t(g.uniform(0, int(bodies.size()) - 1));
     const std::vector<std::string> host = bodies[host_index];
     if (kind <= 1) {  // hinge on two points of a body, closed by a distance to an earlier point
@@ -225,6 +229,40 @@ static Generated grow(Rng& g, int steps, const Q& scale, bool flat = false)
       s.add_distance(f, to[2]);
       placed.push_back(f);
       out.structure += "bar ";
+    } else if (kind == 7) {  // a flat plate: a body sharing three points with a fourth in their plane
+      // (rigid: when it enters a merged body as distances, that point's height 0 over the three
+      // is the plate's shape, not a double placement)
+      std::vector<std::string> b = pick(placed, 3);
+      if (collinear(s.at(b[0]), s.at(b[1]), s.at(b[2]))) { out.structure += "(skip) "; continue; }
+      const QP a = s.at(b[0]), u = s.at(b[1]) - a, v = s.at(b[2]) - a;
+      const QP p = a + Q(g.uniform(-3, 3), 2) * u + Q(g.uniform(-3, 3), 3) * v;
+      if (!off_lines(p)) { out.structure += "(skip) "; continue; }
+      b.push_back(point(p));
+      body(b);
+      placed.push_back(b.back());
+      out.structure += "plate ";
+    } else if (kind == 8) {  // a rail point: on the line of two placed points, held by its two
+      // distances to them (its spheres touch: a double point) and a bar to a third
+      std::vector<std::string> uv = pick(placed, 2);
+      static const int lam[4][2] = {{1, 3}, {1, 2}, {2, 3}, {3, 2}};
+      const int* l = lam[g.uniform(0, 3)];
+      const QP p = s.at(uv[0]) + Q(l[0], l[1]) * (s.at(uv[1]) - s.at(uv[0]));
+      bool ok = true;  // off every other line through two points
+      for (std::size_t a = 0; a < s.global.size() && ok; ++a) {
+        ok = !is_zero(p - s.global[a]);
+        for (std::size_t c = a + 1; c < s.global.size() && ok; ++c)
+          if (!(s.labels[a] == uv[0] && s.labels[c] == uv[1]) && !(s.labels[a] == uv[1] && s.labels[c] == uv[0]))
+            ok = !collinear(s.global[a], s.global[c], p);
+      }
+      if (!ok) { out.structure += "(skip) "; continue; }
+      const std::string w = point(p);
+      std::string far;
+      do far = placed[std::size_t(g.uniform(0, int(placed.size()) - 1))]; while (far == uv[0] || far == uv[1]);
+      body_with({w, far}, scaled_rigid(g, scale));
+      s.add_distance(w, uv[0]);
+      s.add_distance(w, uv[1]);
+      placed.push_back(w);
+      out.structure += "rail ";
     } else {  // a body turned from its host by k quarter turns about a hinge, closed by a distance
       // the hinge: a host point and a new one at a distance that is a power of two, along a
       // Pythagorean quadruple: quarter turns about it are rational, and the hinge's charts

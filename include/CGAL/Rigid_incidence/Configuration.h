@@ -14,6 +14,7 @@
 #include <CGAL/Rigid_incidence/Rigid_body_collection.h>
 
 #include <Eigen/Dense>
+#include <Eigen/SVD>
 
 #include <array>
 #include <cmath>
@@ -424,6 +425,104 @@ Residual_report residuals(const Rigid_body_collection<Traits>& original, const C
     add(Residual::DISTANCE, what, std::abs(dist2(u, w) - CGAL::to_double(d.squared)));
   }
   return rep;
+}
+
+/*!
+\ingroup PkgRigidIncidenceRef
+\brief How far `conf` is from a singular point of the ORIGINAL system of `original`: the
+smallest singular value of its Jacobian over the largest, in world coordinates (3 unknowns per
+point, the frame body's points fixed; every other body of 3 or more points holds its base
+triangle by its 3 squared distances and each further point at
+\f$X_0 + a (X_1 - X_0) + b (X_2 - X_0) + c (X_1 - X_0) \times (X_2 - X_0)\f$, with \f$a, b, c\f$ from
+its coordinates, so that a flat body stays rigid; bars and distances are squared-distance
+equations, divided by the scene's size). 0 when the Jacobian is short of rank (a multiple root
+or a curve of configurations), near 1 for a well-conditioned simple root; -1 when a point is
+not placed. Computed in doubles (Eigen's BDCSVD) at the configuration's approximation, whose
+error is far below the values it tells apart (`solve_scene()` calls a placement's exactly-zero
+height a simple root when this ratio is above \f$10^{-7}\f$: further equations hold the point).
+*/
+template <class Traits>
+double jacobian_conditioning(const Rigid_body_collection<Traits>& original, const Configuration& conf)
+{
+  std::map<std::string, std::size_t> index;
+  for (std::size_t i = 0; i < conf.labels.size(); ++i) index[conf.labels[i]] = i;
+  const std::size_t n = original.number_of_points();
+  std::vector<Eigen::Vector3d> x(n);
+  double size = 0;
+  for (std::size_t q = 0; q < n; ++q) {
+    auto it = index.find(original.label(q));
+    if (it == index.end() || !conf.placed[it->second]) return -1;
+    const auto& p = conf.points[it->second];
+    x[q] = Eigen::Vector3d(p[0], p[1], p[2]);
+  }
+  for (std::size_t q = 1; q < n; ++q) size = (std::max)(size, (x[q] - x[0]).norm());
+  if (!(size > 0) || !std::isfinite(size)) return -1;
+  for (auto& v : x) v /= size;
+  std::vector<Eigen::RowVectorXd> rows;
+  auto distance_row = [&](std::size_t a, std::size_t b) {
+    Eigen::RowVectorXd r = Eigen::RowVectorXd::Zero(Eigen::Index(3 * n));
+    const Eigen::Vector3d d = 2 * (x[a] - x[b]);
+    r.segment<3>(Eigen::Index(3 * a)) = d.transpose();
+    r.segment<3>(Eigen::Index(3 * b)) = -d.transpose();
+    rows.push_back(r);
+  };
+  auto crossm = [](const Eigen::Vector3d& w) {
+    Eigen::Matrix3d m;
+    m << 0, -w.z(), w.y(), w.z(), 0, -w.x(), -w.y(), w.x(), 0;
+    return m;
+  };
+  const std::string frame = original.frame();
+  for (std::size_t bi = 0; bi < original.number_of_bodies(); ++bi) {
+    const auto& b = original.body(bi);
+    if (b.name == frame) {
+      for (std::size_t q : b.points)
+        for (int k = 0; k < 3; ++k) {
+          Eigen::RowVectorXd r = Eigen::RowVectorXd::Zero(Eigen::Index(3 * n));
+          r(Eigen::Index(3 * q) + k) = 1;
+          rows.push_back(r);
+        }
+      continue;
+    }
+    if (b.points.size() == 2) { distance_row(b.points[0], b.points[1]); continue; }
+    if (!b.all_coordinates()) return -1;
+    std::size_t i1 = 0, i2 = 0;  // a base triangle off a line, with point 0
+    for (std::size_t u = 1; u < b.points.size() && i2 == 0; ++u)
+      for (std::size_t v = u + 1; v < b.points.size() && i2 == 0; ++v)
+        if (!Traits::collinear(b.coordinates[0], b.coordinates[u], b.coordinates[v])) { i1 = u; i2 = v; }
+    if (i2 == 0) return -1;
+    auto local = [&](std::size_t i) {
+      return Eigen::Vector3d(CGAL::to_double(Traits::x(b.coordinates[i])), CGAL::to_double(Traits::y(b.coordinates[i])),
+                             CGAL::to_double(Traits::z(b.coordinates[i])));
+    };
+    const std::size_t g0 = b.points[0], g1 = b.points[i1], g2 = b.points[i2];
+    distance_row(g0, g1);
+    distance_row(g0, g2);
+    distance_row(g1, g2);
+    const Eigen::Vector3d ul = local(i1) - local(0), vl = local(i2) - local(0);
+    Eigen::Matrix3d E;
+    E << ul, vl, ul.cross(vl);
+    const Eigen::Vector3d u = x[g1] - x[g0], v = x[g2] - x[g0];
+    for (std::size_t i = 1; i < b.points.size(); ++i) {
+      if (i == i1 || i == i2) continue;
+      const Eigen::Vector3d abc = E.fullPivLu().solve(local(i) - local(0));
+      // (c multiplies a product of two differences: in units of the scene's size, c size)
+      const double a = abc(0), bb = abc(1), c = abc(2) * size;
+      const Eigen::Matrix3d I = Eigen::Matrix3d::Identity();
+      Eigen::MatrixXd block = Eigen::MatrixXd::Zero(3, Eigen::Index(3 * n));
+      block.block<3, 3>(0, Eigen::Index(3 * b.points[i])) += I;
+      block.block<3, 3>(0, Eigen::Index(3 * g0)) += -(1 - a - bb) * I - c * crossm(v - u);
+      block.block<3, 3>(0, Eigen::Index(3 * g1)) += -a * I + c * crossm(v);
+      block.block<3, 3>(0, Eigen::Index(3 * g2)) += -bb * I - c * crossm(u);
+      for (int r = 0; r < 3; ++r) rows.push_back(block.row(r));
+    }
+  }
+  for (const auto& d : original.distances()) distance_row(d.a, d.b);
+  if (rows.size() < 3 * n) return 0;
+  Eigen::MatrixXd J(Eigen::Index(rows.size()), Eigen::Index(3 * n));
+  for (std::size_t r = 0; r < rows.size(); ++r) J.row(Eigen::Index(r)) = rows[r];
+  const Eigen::VectorXd sv = Eigen::BDCSVD<Eigen::MatrixXd>(J).singularValues();
+  if (sv.size() == 0 || !(sv(0) > 0)) return 0;
+  return sv(sv.size() - 1) / sv(0);
 }
 
 } // namespace Rigid_incidence

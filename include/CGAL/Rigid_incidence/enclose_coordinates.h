@@ -254,6 +254,9 @@ public:
         if (g.size() >= 3) P.rigid_groups.push_back(g);
       };
       for (const auto& g : b_.rigid_groups) local_group(g);
+      std::vector<std::size_t> own;  // its own coordinates (entering as distances when they cannot start the placement)
+      for (std::size_t k = 0; k < m; ++k) if (b_.has_coordinates[k]) own.push_back(b_.points[k]);
+      local_group(own);
       for (const Body& o : c_.bodies()) {
         std::vector<std::size_t> g;
         for (std::size_t k = 0; k < o.points.size(); ++k) if (o.has_coordinates[k]) g.push_back(o.points[k]);
@@ -373,12 +376,15 @@ private:
     const std::size_t m = plan_.m;
     while (true) {
       bool progress = false;
-      for (std::size_t p = 0; p < m && !progress; ++p)
-        if (!placed[p])
-          if (auto tri = reference_triangle(p, placed)) {
-            if (steps) steps->push_back(step(p, *tri));
-            placed[p] = progress = true;
-          }
+      // a point off the plane of three placed references first: a point in the plane of the
+      // only ones it has so far (a double placement) waits for others that may hold it better
+      for (bool nonzero : {true, false})
+        for (std::size_t p = 0; p < m && !progress; ++p)
+          if (!placed[p])
+            if (auto tri = reference_triangle(p, placed, nonzero)) {
+              if (steps) steps->push_back(step(p, *tri));
+              placed[p] = progress = true;
+            }
       for (std::size_t j = 0; j < plan_.parts.size() && !progress; ++j) {
         if (used[j]) continue;
         std::size_t on = 0;
@@ -435,13 +441,17 @@ private:
   bool holds(std::size_t part, std::size_t p) const
   { return std::find(plan_.part_map[part].begin(), plan_.part_map[part].end(), p) != plan_.part_map[part].end(); }
 
-  std::optional<std::array<std::size_t, 3>> reference_triangle(std::size_t p, const std::vector<bool>& placed) const
+  // The first proper triangle of placed points at known distances from p; with `nonzero`, the
+  // first over whose plane p has a height that is not 0.
+  std::optional<std::array<std::size_t, 3>> reference_triangle(std::size_t p, const std::vector<bool>& placed, bool nonzero) const
   {
     std::vector<std::size_t> refs;
     for (std::size_t q = 0; q < plan_.m; ++q) if (placed[q] && plan_.known[p][q]) refs.push_back(q);
     for (std::size_t a = 0; a < refs.size(); ++a) for (std::size_t b = a + 1; b < refs.size(); ++b)
       for (std::size_t c = b + 1; c < refs.size(); ++c)
-        if (proper_triangle(refs[a], refs[b], refs[c])) return std::array<std::size_t, 3>{refs[a], refs[b], refs[c]};
+        if (proper_triangle(refs[a], refs[b], refs[c]) &&
+            (!nonzero || trilateration(p, {refs[a], refs[b], refs[c]}).sign != CGAL::ZERO))
+          return std::array<std::size_t, 3>{refs[a], refs[b], refs[c]};
     return std::nullopt;
   }
 
@@ -468,6 +478,23 @@ private:
   Placement_step step(std::size_t p, const std::array<std::size_t, 3>& t)
   {
     const auto& K = plan_.known;
+    const Placement_step s = trilateration(p, t);
+    const Q r1 = *K[p][s.A], r2 = *K[p][s.B], r3 = *K[p][s.C];
+    const Q h2 = s.s * (*K[s.A][s.B] * *K[s.A][s.C] - CGAL::square((*K[s.A][s.B] + *K[s.A][s.C] - *K[s.B][s.C]) / Q(2)));
+    const std::string who = "'" + plan_.labels[p] + "' over the plane of '" + plan_.labels[s.A] + "', '" + plan_.labels[s.B] +
+                            "' and '" + plan_.labels[s.C] + "'";
+    if (s.sign == CGAL::NEGATIVE && plan_.inconsistent.empty())
+      plan_.inconsistent = "body '" + b_.name + "': the squared distances of " + who + " (" + to_text(r1) + ", " + to_text(r2) + ", " +
+                           to_text(r3) + ") admit no real point (its squared height over that plane would be " + to_text(h2) + ")";
+    if (s.sign == CGAL::ZERO && !rigidly_degenerate<Traits::has_exact_ft>(plan_, p, s.A, s.B, s.C) && singular_points_++ == 0)
+      plan_.singular = "body '" + b_.name + "': the height of " + who + " is exactly 0 (a double placement: its two sides coincide)";
+    return s;
+  }
+
+  // The exact trilateration of p from the triangle t (see Placement_step), without notes.
+  Placement_step trilateration(std::size_t p, const std::array<std::size_t, 3>& t) const
+  {
+    const auto& K = plan_.known;
     Placement_step s;
     s.p = p; s.A = t[0]; s.B = t[1]; s.C = t[2];
     const Q uu = *K[s.A][s.B], vv = *K[s.A][s.C], uv = (uu + vv - *K[s.B][s.C]) / Q(2);
@@ -485,13 +512,6 @@ private:
       s.sign = std::abs(v) <= 1e-9 * scale ? CGAL::ZERO : (v > 0 ? CGAL::POSITIVE : CGAL::NEGATIVE);
       if (s.sign == CGAL::ZERO) s.s = 0;
     }
-    const std::string who = "'" + plan_.labels[p] + "' over the plane of '" + plan_.labels[s.A] + "', '" + plan_.labels[s.B] +
-                            "' and '" + plan_.labels[s.C] + "'";
-    if (s.sign == CGAL::NEGATIVE && plan_.inconsistent.empty())
-      plan_.inconsistent = "body '" + b_.name + "': the squared distances of " + who + " (" + to_text(r1) + ", " + to_text(r2) + ", " +
-                           to_text(r3) + ") admit no real point (its squared height over that plane would be " + to_text(h2) + ")";
-    if (s.sign == CGAL::ZERO && !rigidly_degenerate<Traits::has_exact_ft>(plan_, p, s.A, s.B, s.C) && singular_points_++ == 0)
-      plan_.singular = "body '" + b_.name + "': the height of " + who + " is exactly 0 (a double placement: its two sides coincide)";
     return s;
   }
 
@@ -1001,13 +1021,32 @@ private:
         note_undecided(true, "the points '" + plan_.labels[s.p] + "' is placed from are not " + certainly() + " off a line");
         return;
       }
-      const P u = sub(x_[B], x_[A]), v = sub(x_[C], x_[A]);
-      const W uu = frame_.dot(u, u), vv = frame_.dot(v, v), uv = frame_.dot(u, v), G = uu * vv - uv * uv;
-      const W r1 = *r2[A], r2B = *r2[B], r3 = *r2[C];
-      const W alpha = (r1 - r2B + uu) / W(2), beta = (r1 - r3 + vv) / W(2);
-      a = (alpha * vv - beta * uv) / G;
-      b = (beta * uu - alpha * uv) / G;
-      const W H2 = r1 - (a * a * uu + W(2) * a * b * uv + b * b * vv), S = H2 / G;
+      // a, b and the squared height over G of p from the triple (A, B, C)
+      auto from = [&](std::size_t A1, std::size_t B1, std::size_t C1, W& a1, W& b1, W& H2, W& S1) {
+        const P u = sub(x_[B1], x_[A1]), v = sub(x_[C1], x_[A1]);
+        const W uu = frame_.dot(u, u), vv = frame_.dot(v, v), uv = frame_.dot(u, v), G = uu * vv - uv * uv;
+        const W r1 = *r2[A1], r2B = *r2[B1], r3 = *r2[C1];
+        const W alpha = (r1 - r2B + uu) / W(2), beta = (r1 - r3 + vv) / W(2);
+        a1 = (alpha * vv - beta * uv) / G;
+        b1 = (beta * uu - alpha * uv) / G;
+        H2 = r1 - (a1 * a1 * uu + W(2) * a1 * b1 * uv + b1 * b1 * vv);
+        S1 = H2 / G;
+      };
+      W H2(0), S(0);
+      from(A, B, C, a, b, H2, S);
+      if (!within_slack_of_zero(H2) && !positive(S) && !negative(S)) {
+        // p not certainly off the plane of the flattest triple (exactly on it, in exact
+        // arithmetic): a triple it is certainly off (or certainly has no real point for) decides
+        // its sides, and the distances to the others are checks; none: the first stays
+        for (const auto& r : s.references) {
+          if (flatness(frame_, x_[r[0]], x_[r[1]], x_[r[2]]) <= 0) continue;
+          W a1(0), b1(0), H21(0), S1(0);
+          from(r[0], r[1], r[2], a1, b1, H21, S1);
+          if (!positive(S1) && !negative(S1)) continue;
+          A = r[0]; B = r[1]; C = r[2]; a = a1; b = b1; H2 = H21; S = S1;
+          break;
+        }
+      }
       if (within_slack_of_zero(H2)) { t = W(0); two_sides = false; }  // rounded input: on the plane
       else if (negative(S)) return;  // no real point on this branch
       else if (positive(S)) { t = CGAL::sqrt(S); two_sides = true; }
@@ -1251,6 +1290,15 @@ std::string placement_key(const Rigid_body_collection<Traits>& c, const typename
   for (const auto& g : b.rigid_groups) {
     os << "rigid";
     for (std::size_t q : g) field(c.label(q));
+    os << '\n';
+  }
+  // the planner's rigid groups from the collection's other bodies (their points with coordinates)
+  for (const auto& o : c.bodies()) {
+    std::size_t k = 0;
+    for (std::size_t i = 0; i < o.points.size(); ++i) k += o.has_coordinates[i] && b.contains(o.points[i]);
+    if (k < 3 || &o == &b) continue;
+    os << "held";
+    for (std::size_t i = 0; i < o.points.size(); ++i) if (o.has_coordinates[i] && b.contains(o.points[i])) field(c.label(o.points[i]));
     os << '\n';
   }
   for (const auto& part : b.parts) field(placement_key(c, part));

@@ -992,13 +992,27 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
           for (std::size_t b = 0; b < enumerations.size(); ++b) {
             if (!enumerations[b] || !singular_body[b].empty()) continue;  // none, or said for every placement
             const auto& list = enumerations[b]->placements;
-            const std::size_t i = b < v.placements.size() ? std::size_t(v.placements[b]) : 0;
+            // the placement this configuration uses: its own where the body's placements are
+            // enumerated (radix_p, nc_bodies); else (its points all fixed by the system) any of
+            // them, so the flag only when every placement has it
+            const bool enumerated = (b < radix_p.size() && radix_p[b] > 1) ||
+                                    std::find(nc_bodies.begin(), nc_bodies.end(), b) != nc_bodies.end() || list.size() == 1;
+            std::size_t i = enumerated && b < v.placements.size() ? std::size_t(v.placements[b]) : 0;
+            if (!enumerated)
+              for (std::size_t k = 0; k < list.size(); ++k) if (!list[k].singular) { i = list.size(); break; }
             if (i < list.size() && list[i].singular && v.singular_reason.find(list[i].singular_reason) == std::string::npos) {
               v.singular = true;
               v.singular_reason += (v.singular_reason.empty() ? "" : "; ") + list[i].singular_reason;
             }
           }
           v.configuration = configuration(r, root.approximation, v.placements);
+          // a height exactly 0 in a placement is a double point of the body's own distances;
+          // further equations of the scene (a distance or a body it leaves to the reduced
+          // system) may still hold the point: then the Jacobian has full rank and the root is simple
+          if (v.singular && !from_region[ri] && jacobian_conditioning(original, v.configuration) > 1e-7) {
+            v.singular = false;
+            v.singular_reason.clear();
+          }
           v.residuals = residuals(original, v.configuration);
           v.max_residual = v.residuals.max();
           const double vsize = internal::configuration_size(v.configuration);
@@ -1030,8 +1044,11 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
         bool merged = false;
         for (auto& f : found) {
           // one root seen from two charts; never two roots of one system, nor two placements
-          // of a body (distinct shapes, however close: a near-degenerate body's mirror pair)
-          if (f.s.placements != s.placements || f.s.charts == s.charts) continue;
+          // of a body (distinct shapes, however close: a near-degenerate body's mirror pair);
+          // but two regions of one system around one possible multiple root (a cluster the
+          // solver left in two pieces) are one configuration, still not certified
+          if (f.s.placements != s.placements) continue;
+          if (f.s.charts == s.charts && (f.s.certified || s.certified)) continue;
           if (internal::configuration_distance(f.s.configuration, s.configuration) <= parameters.merge_tolerance * (std::max)(size, f.size)) {
             ++f.s.found;
             ++st.duplicates;

@@ -434,6 +434,13 @@ private:
           if (b.points[q] == w) { *why = "the handedness it keeps involves '" + c_.label(w) + "'"; return false; }
     }
     const std::size_t lu = b.local(u), lv = b.local(v);
+    // a point with coordinates stays unless the axis's ends have them too (then it is on their
+    // line in the body's own coordinates, and the frame they span is the same without it)
+    for (std::size_t w : ps)
+      if (b.has_coordinates[b.local(w)] && (!b.has_coordinates[lu] || !b.has_coordinates[lv])) {
+        *why = "'" + c_.label(w) + "' has coordinates there and '" + c_.label(u) + "' or '" + c_.label(v) + "' has not";
+        return false;
+      }
     const FT c = axis_squared(u, v);
     std::vector<Squared_distance> added;
     for (std::size_t w : ps) {
