@@ -24,9 +24,10 @@
 // Flat scenes (a third argument `flat`): every point of the planted configuration in one plane
 // but the off-hinge apexes and quarter-turned bodies, as planar linkages are: heights exactly 0
 // through rigid parts, which only exact arithmetic decides (issue 27, item 3).
-// Usage: test_random_planted_scenes [SCENES [SEED [flat [verbose]]]] (default 150 scenes, the
-// CI's run); the seed and the scene's JSON are printed on failure, to replay with
-// `rigid_incidence solve`; with `verbose`, each scene on stderr before it is solved.
+// Usage: test_random_planted_scenes [SCENES [SEED [flat|- [verbose|- [FIRST]]]]] (default 150
+// scenes, the CI's run); the seed and the scene's JSON are printed on failure, to replay with
+// `rigid_incidence solve`; with `verbose`, each scene on stderr before it is solved; scenes
+// before FIRST are generated but not solved (to replay one scene of a long run).
 
 #include <CGAL/Gmpq.h>
 #include <CGAL/Simple_cartesian.h>
@@ -175,12 +176,17 @@ static Generated grow(Rng& g, int steps, const Q& scale, bool flat = false)
         static const int lam[4][2] = {{1, 2}, {2, 1}, {-1, 1}, {1, 3}};
         const int* l = lam[g.uniform(0, 3)];
         const QP p = s.at(h[0]) + Q(l[0], l[1]) * (s.at(h[1]) - s.at(h[0]));
-        axis = point(p);
-        s.bodies[host_index].pts.push_back(s.index(axis));
-        s.bodies[host_index].local.push_back(maps[host_index].apply(p));
-        bodies[host_index].push_back(axis);
-        b.push_back(axis);
-        out.structure += "axis3 ";
+        // (not where a point already is: an earlier axis point of the same hinge, seed 7, scene 2279)
+        bool taken = false;
+        for (const QP& q : s.global) taken = taken || is_zero(p - q);
+        if (!taken) {
+          axis = point(p);
+          s.bodies[host_index].pts.push_back(s.index(axis));
+          s.bodies[host_index].local.push_back(maps[host_index].apply(p));
+          bodies[host_index].push_back(axis);
+          b.push_back(axis);
+          out.structure += "axis3 ";
+        }
       }
       body(b);
       std::string far;  // off the hinge's line (an axis point): a distance to it does not hold the turn
@@ -459,7 +465,9 @@ int main(int argc, char** argv)
   const int scenes = argc > 1 ? std::atoi(argv[1]) : 150;
   const unsigned seed = argc > 2 ? unsigned(std::atol(argv[2])) : 20261127u;
   const bool flat = argc > 3 && std::string(argv[3]) == "flat";
-  const bool verbose = argc > 4;  // each scene on stderr before it is solved (to find one that takes long)
+  const bool verbose = argc > 4 && std::string(argv[4]) == "verbose";  // each scene on stderr before it is solved
+  // scenes before FIRST are generated (the random sequence is the same) but not solved
+  const int first = argc > 5 ? std::atoi(argv[5]) : 0;
   Rng g(seed);
   int planted_singular = 0;  // complete answers whose planted configuration is a singular point
   int solved = 0, complete = 0, incomplete = 0, refused = 0, skipped = 0, configurations = 0, on_border = 0;
@@ -471,6 +479,7 @@ int main(int argc, char** argv)
     for (int k = 0; k < (e < 0 ? -e : e); ++k) scale = e < 0 ? scale / Q(10) : scale * Q(10);
     Generated gen = grow(g, steps, scale, flat);
     const std::string what = "scene " + std::to_string(n) + " (seed " + std::to_string(seed) + ", scale 1e" + std::to_string(e) + ": " + gen.structure + ")";
+    if (n < first) continue;
     if (verbose) std::cerr << what << "\n  " << to_json(gen.s, gen.frame) << std::endl;
     RI::Scene_solve_result r;
     try {
@@ -484,7 +493,10 @@ int main(int argc, char** argv)
       const bool exact = RI::exact_coefficients(c, t);
       RI::Scene_solve_parameters p;
       p.solver.maximal_boxes = 20000;
-      if (flat) {  // multiple roots everywhere (every fold at its double point): not worth more precision
+      // multiple roots everywhere (every fold at its double point), or a rail point's touching
+      // spheres left to the reduced system (a double root, retried at more bits until the box
+      // budget ends, in every chart combination): not worth more precision
+      if (flat || gen.structure.find("rail") != std::string::npos) {
         p.solver.maximal_boxes = 5000;
         p.maximal_coefficient_precision = 53;
       }
@@ -578,9 +590,9 @@ int main(int argc, char** argv)
   // a regression to "everything incomplete" must not pass: on the seeds measured, all but 1 or 2
   // of 300 solved scenes are complete
   // (flat scenes: multiple roots and placements decided exactly, not counted)
-  CHECK(flat || solved == 0 || 10 * complete >= 9 * solved, complete << " complete answers of " << solved << " solved scenes");
+  CHECK(flat || first > 0 || solved == 0 || 10 * complete >= 9 * solved, complete << " complete answers of " << solved << " solved scenes");
   // the quarter turns put roots on chart borders: a generator that no longer does tests less
-  CHECK(flat || scenes < 100 || on_border > 0, "no planted configuration on a chart border in " << scenes << " scenes");
+  CHECK(flat || first > 0 || scenes < 100 || on_border > 0, "no planted configuration on a chart border in " << scenes << " scenes");
   if (failures) { std::cerr << failures << " check(s) failed\n"; return 1; }
   return 0;
 }
