@@ -36,7 +36,7 @@ static const char* usage_text =
   "                         [--coefficients auto|exact|interval] [--kernel exact|epick|epeck]\n"
   "  rigid_incidence solve SCENE.json [--json] [--tolerance EPS] [--precision BITS] [--fast]\n"
   "                        [--svg FILE] [--plot A.x,B.z] [--near CONFIG.json] [--max-boxes N]\n"
-  "                        [--kernel K]\n"
+  "                        [--max-seconds S] [--quiet] [--kernel K]\n"
   "  rigid_incidence family SCENE.json [--json] [--svg FILE] [--samples K] [--tolerance EPS]\n"
   "                        [--precision BITS] [--max-boxes N] [--kernel K]\n"
   "  rigid_incidence solve-system FILE [--json] [--tolerance EPS] [--precision BITS] [--fast]\n"
@@ -96,7 +96,11 @@ static const char* usage_text =
   "            when there is none. --tolerance EPS (default 1e-12): width of the parameter\n"
   "            enclosures; --precision BITS (default 53: double intervals; more: MPFI);\n"
   "            --fast: double precision, Newton polish, nothing certified; --max-boxes N per\n"
-  "            chart combination (default 200000); --svg FILE: the configurations side by\n"
+  "            chart combination (default 200000); --max-seconds S: a time limit for the\n"
+  "            whole solve (what is not done by then is reported, the answer not complete);\n"
+  "            a progress line on standard error when it is a terminal (--quiet: none);\n"
+  "            Ctrl-C (SIGINT) or SIGTERM stops the solve and prints the partial answer,\n"
+  "            incomplete, with exit status 130 or 143; --svg FILE: the configurations side by\n"
   "            side as line drawings; --near CONFIG.json: order the configurations by their\n"
   "            distance to a given one ({\"points\": {label: [x, y, z]}} or a solve --json\n"
   "            output). --json: {scene, analysis, reduced_system {variables, equations},\n"
@@ -542,6 +546,18 @@ int main(int argc, char** argv)
     } else if (a == "--fast") {
       if (o.command != "solve" && o.command != "solve-system") { std::cerr << "rigid_incidence: --fast is an option of solve\n"; return 1; }
       o.solve.fast = true;
+    } else if (a == "--quiet") {
+      if (o.command != "solve") { std::cerr << "rigid_incidence: --quiet is an option of solve\n"; return 1; }
+      o.solve.quiet = true;
+    } else if (a == "--max-seconds") {
+      if (i + 1 >= args.size()) { std::cerr << "rigid_incidence: " << a << " needs a value\n"; return 1; }
+      if (o.command != "solve") { std::cerr << "rigid_incidence: --max-seconds is an option of solve\n"; return 1; }
+      try {
+        o.solve.max_seconds = solve_command::parse_positive(a, args[++i]);
+      } catch (const RI::Input_error& e) {
+        std::cerr << "rigid_incidence: " << e.what() << "\n";
+        return 1;
+      }
     } else if (a == "--samples") {
       if (i + 1 >= args.size()) { std::cerr << "rigid_incidence: " << a << " needs a value\n"; return 1; }
       if (o.command != "family") { std::cerr << "rigid_incidence: --samples is an option of family\n"; return 1; }

@@ -11,13 +11,18 @@
 
 #include <nlohmann/json.hpp>
 
+#include <atomic>
+#include <chrono>
+#include <csignal>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <map>
 #include <sstream>
 #include <string>
+#include <unistd.h>
 #include <vector>
 
 namespace solve_command {
@@ -33,6 +38,46 @@ struct Solve_options
   std::size_t max_boxes = 0;   // 0: the solver's default
   std::string svg, near;
   std::string plot;  // --plot A.x,B.z: the coordinates plotted against each other for curves
+  double max_seconds = 0;  // --max-seconds: the whole solve (0: no limit)
+  bool quiet = false;      // --quiet: no progress line
+};
+
+// SIGINT and SIGTERM during a solve: the solve stops as at its time limit and the partial
+// answer is printed (the exit status is then 128 + the signal); a second one ends the
+// program at once (the default action, restored by the first).
+inline std::atomic<bool> interrupted{false};
+inline volatile std::sig_atomic_t signal_received = 0;
+inline void on_signal(int sig)
+{
+  signal_received = sig;
+  interrupted.store(true);
+  std::signal(sig, SIG_DFL);
+}
+
+// The progress line on standard error, when it is a terminal (at most 4 times a second,
+// rewritten in place, erased at the end).
+struct Progress_line
+{
+  std::chrono::steady_clock::time_point last{};
+  bool shown = false;
+  void operator()(const RI::Scene_solve_progress& g)
+  {
+    const auto now = std::chrono::steady_clock::now();
+    if (shown && now - last < std::chrono::milliseconds(250)) return;
+    last = now;
+    shown = true;
+    std::ostringstream line;
+    line << std::setprecision(3) << "rigid_incidence: solving: " << g.combinations_done << "/";
+    if (g.combinations_total) line << g.combinations_total; else line << "many";
+    line << " chart and placement combinations, " << g.boxes << " boxes, " << g.configurations << " configuration(s), "
+         << (g.coefficient_precision ? std::to_string(g.coefficient_precision) + "-bit" : std::string("exact")) << " coefficients, "
+         << g.seconds << " s";
+    std::cerr << "\r" << line.str() << "\033[K" << std::flush;
+  }
+  ~Progress_line()
+  {
+    if (shown) std::cerr << "\r\033[K" << std::flush;
+  }
 };
 
 // Parses a positive number option; an Input_error names the option.
@@ -361,6 +406,10 @@ RI::Scene_solve_result run(const RI::Scene& scene, const RI::Rigid_body_collecti
   p.solver.precision = o.precision;
   p.solver.fast = o.fast;
   if (o.max_boxes) p.solver.maximal_boxes = o.max_boxes;
+  p.maximal_seconds = o.max_seconds;
+  p.interrupt = &interrupted;
+  Progress_line line;
+  if (!o.quiet && isatty(2)) p.progress = std::ref(line);
   return RI::solve_scene<IT, NT>(input, c, t, s, p);
 }
 
@@ -373,6 +422,8 @@ int solve(const RI::Scene& scene, const RI::Rigid_body_collection<Traits>& input
   // pair through a placement), else certified intervals
   const bool exact = RI::exact_coefficients(c, t);
   RI::Scene_solve_result r;
+  std::signal(SIGINT, on_signal);
+  std::signal(SIGTERM, on_signal);
   if (o.precision <= 53) {
     if (exact) r = run<CGAL::Interval_nt<false>, CGAL::Gmpq>(scene, input, c, t, s, o);
     else r = run<CGAL::Interval_nt<false>, CGAL::Interval_nt<false>>(scene, input, c, t, s, o);
@@ -508,7 +559,7 @@ int solve(const RI::Scene& scene, const RI::Rigid_body_collection<Traits>& input
                   {"seconds", {{"analysis", analysis_seconds}, {"reduce", st.reduce_seconds}, {"solve", st.solve_seconds},
                                {"verify", st.verify_seconds}}}};
     std::cout << j.dump(2) << "\n";
-    return 0;
+    return signal_received ? 128 + int(signal_received) : 0;
   }
   std::cout << std::setprecision(10);
   std::cout << "scene " << scene_file << ": reduced system of " << r.variables.size() << " variables, " << r.equations << " equations; "
@@ -593,7 +644,7 @@ int solve(const RI::Scene& scene, const RI::Rigid_body_collection<Traits>& input
             << (st.placements_excluded ? ", " + std::to_string(st.placements_excluded) + " combinations of placements excluded (shared points at distances that differ)" : std::string())
             << "; seconds: analysis " << analysis_seconds << ", reduce "
             << st.reduce_seconds << ", solve " << st.solve_seconds << ", verify " << st.verify_seconds << "\n";
-  return 0;
+  return signal_received ? 128 + int(signal_received) : 0;
 }
 
 } // namespace solve_command

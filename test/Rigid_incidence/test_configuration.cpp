@@ -8,6 +8,9 @@
 // of every shared point in every pair of bodies, every distance) must vanish. Also: a point
 // that is not a root gives residuals that do not vanish; the frame body sits at the identity;
 // fit_rigid_motion() recovers planted motions and flags mirror images; malformed calls throw.
+// The mirror image (z -> -z) of every root is checked too: where a body spans space it fits
+// only mirrored, and its residuals with the mirrored bodies reflected (what solve_scene()
+// needs to reject a spurious root) vanish, while with one point moved they do not.
 
 #include <CGAL/Gmpq.h>
 #include <CGAL/Random.h>
@@ -57,7 +60,7 @@ bool newton(const std::vector<RI::Sparse_polynomial<NT>>& f, const std::vector<s
 
 template <class Traits>
 void check_scene(const RI::Rigid_body_collection<Traits>& user, const std::string& name, CGAL::Random& rng, int starts,
-                 int min_roots, bool singular_ok = false)
+                 int min_roots, bool singular_ok = false, bool spatial = true)
 {
   auto c = RI::standardize(user);
   auto t = RI::optimal_incidence_tree(c);
@@ -67,7 +70,7 @@ void check_scene(const RI::Rigid_body_collection<Traits>& user, const std::strin
   CHECK(probe.is_square(), name << ": not square: " << probe.diagnostic());
   if (!probe.is_square()) return;
   const std::size_t combos = probe.number_of_chart_combinations();
-  int roots = 0, mirrored = 0;
+  int roots = 0, mirrored = 0, mirrored_images = 0;
   double worst = 0;
   for (std::size_t combo = 0; combo < combos && combo < 64; ++combo) {
     std::vector<int> charts;
@@ -92,7 +95,19 @@ void check_scene(const RI::Rigid_body_collection<Traits>& user, const std::strin
       RI::Configuration conf = RI::configuration(r, x);
       RI::Residual_report rep = RI::residuals(user, conf);
       CHECK(rep.complete, name << ": a root leaves bodies or distances unplaced");
-      if (rep.mirrored) { ++mirrored; continue; } // a body known by distances may come back mirrored: reported, not hidden
+      if (rep.mirrored) {
+        // a body known by distances may come back mirrored: reported, not hidden; with the
+        // mirrored bodies allowed their mirror image, a root is an exact (mirrored) solution
+        ++mirrored;
+        CHECK(rep.max_incidence_mirrored < 1e-6 && rep.max_distance_mirrored < 1e-6,
+              name << ": a mirrored root, residuals " << rep.max_incidence_mirrored << ", " << rep.max_distance_mirrored << " with its mirror image");
+        std::vector<double> y = x;
+        y[0] += 0.05;
+        const RI::Residual_report bad = RI::residuals(user, RI::configuration(r, y));
+        CHECK(std::max(bad.max_incidence_mirrored, bad.max_distance_mirrored) > 1e-6,
+              name << ": a point that is no root fits as a mirror image");
+        continue;
+      }
       double m = rep.max();
       worst = std::max(worst, m);
       CHECK(m < 1e-6, name << ": residual " << m << " at a root of the reduced system (chart combination " << combo << ")");
@@ -101,6 +116,27 @@ void check_scene(const RI::Rigid_body_collection<Traits>& user, const std::strin
       CHECK(conf.frame == c.frame() && conf.body_placed[F], name << ": not in the scene's frame");
       if (conf.body_placed[F])
         for (int q = 0; q < 9; ++q) CHECK(std::abs(conf.poses[F].R[std::size_t(q)] - (q % 4 == 0 ? 1 : 0)) < 1e-9, name << ": frame pose not the identity");
+      // its mirror image (z -> -z): every body that spans space fits only mirrored, and as a
+      // mirror image it holds (what solve_scene() rejects as a spurious root); one point moved
+      // off it fits no body, mirrored or not (what solve_scene() must not reject)
+      {
+        RI::Configuration cm = conf;
+        for (auto& p : cm.points) p[2] = -p[2];
+        const RI::Residual_report rm = RI::residuals(user, cm);
+        if (rm.mirrored) {
+          ++mirrored_images;
+          CHECK(rm.max_incidence_mirrored < 1e-6 && rm.max_distance_mirrored < 1e-6,
+                name << ": the mirror image of a root, residuals " << rm.max_incidence_mirrored << ", " << rm.max_distance_mirrored);
+          for (std::size_t q = 0; q < cm.points.size(); ++q) {
+            RI::Configuration cq = cm;
+            cq.points[q][0] += 0.05;
+            const RI::Residual_report rq = RI::residuals(user, cq);
+            if (!rq.mirrored) continue;
+            CHECK(std::max(rq.max_incidence_mirrored, rq.max_distance_mirrored) > 1e-6,
+                  name << ": the mirror image with point " << cm.labels[q] << " moved fits as a mirror image");
+          }
+        }
+      }
       // a point that is not a root: perturb one parameter, the residuals must not vanish
       std::vector<double> y = x;
       y[0] += 0.05;
@@ -109,7 +145,8 @@ void check_scene(const RI::Rigid_body_collection<Traits>& user, const std::strin
     }
   }
   CHECK(roots >= min_roots, name << ": Newton found only " << roots << " roots");
-  std::cout << name << ": " << roots << " Newton roots (" << mirrored << " with a mirrored body), worst residual " << worst << "\n";
+  CHECK(!spatial || mirrored_images > 0, name << ": no root's mirror image has a body that fits only mirrored");
+  std::cout << name << ": " << roots << " Newton roots (" << mirrored << " with a mirrored body, " << mirrored_images << " mirror images checked), worst residual " << worst << "\n";
 }
 
 template <class Traits>
@@ -124,7 +161,7 @@ int main()
   typedef RI::Rigid_incidence_traits<CGAL::Exact_predicates_inexact_constructions_kernel> Epick;
   CGAL::Random rng(5);
   check_scene(scene<Exact>("tetra.json"), "tetra [exact]", rng, 12, 2);
-  check_scene(scene<Exact>("quad.json"), "quad [exact]", rng, 6, 2, true);
+  check_scene(scene<Exact>("quad.json"), "quad [exact]", rng, 6, 2, true, false);  // (flat bodies: no handedness)
   check_scene(scene<Exact>("pent.json"), "pent [exact]", rng, 6, 1);
   check_scene(scene<Epick>("tetra.json"), "tetra [epick]", rng, 8, 2);
 
@@ -141,6 +178,10 @@ int main()
     for (int i = 0; i < 9; ++i) CHECK(std::abs(f.motion.R[std::size_t(i)] - m.R[std::size_t(i)]) < 1e-9, "fitted rotation");
     RI::Rigid_fit g = RI::fit_rigid_motion(y, xm);
     CHECK(g.ok && g.reflected && g.rms > 0.1, "a mirror image is not flagged");
+    for (std::size_t i = 0; i < y.size(); ++i) {  // its mirror motion takes the body onto it
+      const auto p = g.mirror(y[i]);
+      CHECK(std::abs(p[0] - xm[i][0]) + std::abs(p[1] - xm[i][1]) + std::abs(p[2] - xm[i][2]) < 1e-9, "mirror motion of point " << i);
+    }
     RI::Rigid_fit h = RI::fit_rigid_motion({{0, 0, 0}, {1, 0, 0}, {2, 0, 0}}, {{0, 0, 0}, {0, 1, 0}, {0, 2, 0}});
     // collinear points: the rotation about their line is free; one that fits is returned,
     // flagged (a triangle 1e-7 off its hinge is a body of a scene, and its residual counts)

@@ -9,6 +9,8 @@
 // configuration and changes sign between them (up to 6 choices per scene), the solve with the
 // inequality returns exactly the configurations of the right sign, certified and complete,
 // for both signs; with double (Interval_nt) and exact (Gmpq) coefficients as the scene allows.
+// The first inequality of each scene is solved again naming its last point by an alias (a label
+// made one with it by a distance of 0): the same configurations.
 // Then the reader: malformed inequalities are refused with the field named.
 
 #include <CGAL/Gmpq.h>
@@ -61,7 +63,7 @@ static double distance(const RI::Configuration& a, const RI::Configuration& b)
 
 int main()
 {
-  std::size_t choices = 0, selected = 0;
+  std::size_t choices = 0, selected = 0, alias_cases = 0;
   for (const char* name : {"tetra", "pent", "quad_distinct"}) {
     RI::Scene scene = RI::read_scene(std::string(RIGID_INCIDENCE_DATA_DIR) + "/" + name + ".json");
     RI::Scene_solve_result all = solve(scene, {});
@@ -109,10 +111,37 @@ int main()
                 for (const auto& m : all.configurations) same += distance(m.configuration, k.configuration) < 1e-7 * (1 + size);
                 CHECK(same == 1, what << ": a configuration matches " << same << " of the unconstrained solve");
               }
+              // the same inequality naming D by an alias (D renamed D' in the last body that holds
+              // it, joined to D by a distance of 0): a coincidence, the same configurations
+              std::size_t holders = 0;
+              for (const auto& b : scene.bodies)
+                for (const auto& x : b.points) holders += x.label == l[3];
+              if (tried == 1 && holders >= 2) {
+                ++alias_cases;
+                RI::Scene sa = scene;
+                for (auto b = sa.bodies.rbegin(); b != sa.bodies.rend(); ++b) {
+                  auto q = std::find_if(b->points.begin(), b->points.end(), [&](const RI::Scene::Point& x) { return x.label == l[3]; });
+                  if (q == b->points.end()) continue;
+                  q->label = l[3] + "'";
+                  break;
+                }
+                RI::Scene::Distance zero;
+                zero.a = l[3];
+                zero.b = l[3] + "'";
+                zero.squared = 0;
+                sa.distances.push_back(zero);
+                RI::Orientation_inequality ga = g;
+                ga.points[3] = l[3] + "'";
+                RI::Scene_solve_result ra = solve(sa, {ga});
+                CHECK(ra.complete() && ra.configurations.size() == want,
+                      what << ", D named by an alias: " << ra.configurations.size() << " configurations, expected " << want);
+                for (const auto& k : ra.configurations) CHECK(negative ? det(k.configuration, l) < 0 : det(k.configuration, l) > 0, what << ", alias: a configuration on the wrong side");
+              }
             }
           }
     CHECK(tried > 0, name << ": no four points split the configurations");
   }
+  CHECK(alias_cases > 0, "no inequality was tried with an alias");
 
   // the reader
   const std::string head = R"({"format": "rigid-incidence-scene/1", "bodies": [{"name": "c1", "points": {"A": [0,0,0], "B": [1,0,0], "C": [0,1,0]}},

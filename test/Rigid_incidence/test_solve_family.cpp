@@ -1,7 +1,8 @@
 // Copyright (c) 2026 Rigid_incidence contributors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
-// solve_family(): a scene with a free distance, solved as curves over that distance.
+// solve_family(): a scene with a free distance, solved as curves over that distance (also
+// with the distance named by an alias of one of its points: the same family).
 //  - determinant() against Eigen's determinant of the evaluated matrix at random points;
 //  - quad_family (quad with E1-E2 free over [1, 8], the other apex distances 3.5, 4.5, 5): the
 //    family must be complete; the oracle is the scene solved on its own (solve_scene) with
@@ -180,6 +181,13 @@ static void test_quad_family()
   // the count is 0 at both ends of the range (the quad does not close below 1.28 nor above 6.26)
   CHECK(!r.counts.empty() && r.counts.front().count == 0 && r.counts.back().count == 0, "quad_family: no configuration at the ends");
   CHECK(r.count_at(4) == 16, "quad_family: 16 configurations at length 4 (quad_distinct), found " << r.count_at(4));
+  {  // the free distance named by an alias of E2 (a coincidence): the same family
+    RI::Rigid_body_collection<Traits> aliased = input;
+    aliased.add_alias("E2'", "E2", "test: another name of E2");
+    const RI::Family_result ra = RI::solve_family<IT>(aliased, "E1", "E2'", Q(1), Q(8));
+    CHECK(ra.complete() && ra.folds.size() == r.folds.size() && ra.branches.size() == r.branches.size() && ra.count_at(4) == 16,
+          "quad_family named by an alias: " << ra.folds.size() << " folds, " << ra.branches.size() << " branches, " << ra.count_at(4) << " at 4");
+  }
 
   // the oracle: 20 sample lengths
   std::size_t compared = 0;

@@ -28,6 +28,9 @@
 //    in exactly one certified enclosure at most 1e-11 wide; it stayed 0.08 wide).
 //  - random system #5539 of seed 99: a simple root with a condition number of 1e9 leaves a
 //    compact cluster of 2171 boxes in double, which must be retried at 106 bits (certified).
+//  - degree elevation above degree 50, where C(n, k) is no longer exact in doubles: the
+//    Bernstein coefficients of t and t^2 elevated to degree 60..64 must enclose their exact
+//    values k/D and k(k-1)/(D(D-1)) (Gmpq); the weights were rounded, not enclosed.
 
 #include "test_check.h"
 
@@ -179,6 +182,28 @@ static void storage_limit()
 // r_i = (i + 20) / 40, on boxes 2e-3 wide: around the root (one root, certified), and shifted by
 // 1e-2 (none). Each equation bounds a variable by the sum of two others' widths divided by
 // 2 r_i <= 1.5, so the clipping of the equations themselves does not shrink the box.
+// Degree elevation d -> D of the Bernstein arrays of t (d = 1: [0, 1]) and t^2 (d = 2:
+// [0, 0, 1]) on [0, 1]; exactly, the coefficient k of t is k/D, of t^2 k(k-1)/(D(D-1)).
+template <class IT> static void elevation_encloses(const char* name)
+{
+  typename RI::internal::Tensor_shape from1, from2, to;
+  typename IT::Protector protect;
+  for (unsigned D = 60; D <= 64; ++D) {
+    from1.set({0}, {1});
+    from2.set({0}, {2});
+    to.set({0}, {D});
+    const std::vector<IT> t = RI::internal::embed(from1, std::vector<IT>{IT(0), IT(1)}, to);
+    const std::vector<IT> t2 = RI::internal::embed(from2, std::vector<IT>{IT(0), IT(0), IT(1)}, to);
+    for (unsigned k = 0; k <= D; ++k) {
+      const Q e1 = Q(int(k)) / Q(int(D)), e2 = Q(int(k * (k - 1))) / Q(int(D * (D - 1)));
+      CHECK(Q(t[k].inf()) <= e1 && e1 <= Q(t[k].sup()), name << ": t elevated to degree " << D << ", coefficient " << k
+                                                               << " [" << t[k].inf() << ", " << t[k].sup() << "] misses " << e1);
+      CHECK(Q(t2[k].inf()) <= e2 && e2 <= Q(t2[k].sup()), name << ": t^2 elevated to degree " << D << ", coefficient " << k
+                                                                 << " misses " << e2);
+    }
+  }
+}
+
 static void many_variables()
 {
   typedef RI::Sparse_polynomial<Q> P;
@@ -355,6 +380,7 @@ static void check_planted_roots(const char* text, const std::vector<std::vector<
 int main()
 {
   storage_limit();
+  elevation_encloses<I>("Interval_nt");
   check_planted_roots(random_2488, random_2488_roots, "random #2488 of seed 99");
 #ifdef CGAL_USE_MPFI
   check_planted_roots(random_5539, random_5539_roots, "random #5539 of seed 99");

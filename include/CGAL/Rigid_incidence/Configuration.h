@@ -76,6 +76,9 @@ struct Rigid_fit
   /// the points are (nearly) collinear: the rotation about their line is not determined by
   /// them, and `motion` is one that fits (its `rms` says how well)
   bool collinear = false;
+  /// with `reflected`: the best motion with a reflection (an orthogonal matrix of determinant
+  /// -1), which tells a mirror image of the body (a spurious root) from points that fit neither
+  Rigid_motion mirror;
 };
 
 /*!
@@ -130,6 +133,14 @@ inline Rigid_fit fit_rigid_motion(const std::vector<std::array<double, 3>>& y, c
   for (int i = 0; i < 3; ++i) {
     for (int j = 0; j < 3; ++j) f.motion.R[std::size_t(3 * i + j)] = R(i, j);
     f.motion.t[std::size_t(i)] = std::ldexp(t(i), unit);
+  }
+  if (f.reflected) {
+    const Eigen::Matrix3d M = svd.matrixV() * svd.matrixU().transpose();
+    const Eigen::Vector3d tm = cx - M * cy;
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) f.mirror.R[std::size_t(3 * i + j)] = M(i, j);
+      f.mirror.t[std::size_t(i)] = std::ldexp(tm(i), unit);
+    }
   }
   double s = 0;
   for (std::size_t i = 0; i < n; ++i) {
@@ -309,6 +320,12 @@ struct Residual_report
   double max_incidence = 0;       ///< largest INCIDENCE and BODY residual
   double max_distance = 0;        ///< largest DISTANCE residual
   bool mirrored = false;          ///< some body fits only mirrored
+  /// with `mirrored`: the largest INCIDENCE and BODY residual were the bodies that fit only
+  /// mirrored allowed their mirror image (a configuration of the scene's mirrored bodies: what
+  /// tells a spurious root of a system blind to handedness from points that fit no body at all)
+  double max_incidence_mirrored = 0;
+  /// with `mirrored`: the largest DISTANCE residual (bars and distances have no handedness)
+  double max_distance_mirrored = 0;
   bool complete = true;           ///< every body and distance was placed
   /// The largest residual of any kind (infinity if incomplete or mirrored).
   double max() const
@@ -337,6 +354,8 @@ inline void scale_residuals(Residual_report& r, long k)
     else if (e.kind == Residual::INCIDENCE || e.kind == Residual::BODY) e.value = std::ldexp(e.value, int(k));
   r.max_incidence = std::ldexp(r.max_incidence, int(k));
   r.max_distance = std::ldexp(r.max_distance, int(2 * k));
+  r.max_incidence_mirrored = std::ldexp(r.max_incidence_mirrored, int(k));
+  r.max_distance_mirrored = std::ldexp(r.max_distance_mirrored, int(2 * k));
 }
 
 /*!
@@ -396,23 +415,35 @@ Residual_report residuals(const Rigid_body_collection<Traits>& original, const C
     fit[b] = fit_rigid_motion(local[b], x);
     if (!fit[b].ok) { add(Residual::UNPLACED, name + " (fewer than 3 points, or all at one place)", std::numeric_limits<double>::infinity()); continue; }
     if (fit[b].reflected) add(Residual::MIRRORED, name + " fits only mirrored", 1);
-    double worst = 0;
+    double worst = 0, worst_mirrored = 0;
     for (std::size_t i = 0; i < x.size(); ++i) {  // (hypot: no overflow for a point at 1e308)
       const auto p = fit[b].motion(local[b][i]);
       worst = (std::max)(worst, std::hypot(p[0] - x[i][0], p[1] - x[i][1], p[2] - x[i][2]));
+      if (fit[b].reflected) {
+        const auto m = fit[b].mirror(local[b][i]);
+        worst_mirrored = (std::max)(worst_mirrored, std::hypot(m[0] - x[i][0], m[1] - x[i][1], m[2] - x[i][2]));
+      }
     }
     add(Residual::BODY, name, worst);
+    rep.max_incidence_mirrored = (std::max)(rep.max_incidence_mirrored, fit[b].reflected ? worst_mirrored : worst);
   }
+  auto placed_by = [&](std::size_t b, std::size_t q, bool allow_mirror) {
+    const auto& y = local[b][original.body(b).local(q)];
+    return allow_mirror && fit[b].reflected ? fit[b].mirror(y) : fit[b].motion(y);
+  };
   // incidences: every shared point in every pair of fitted bodies
   for (std::size_t a = 0; a < nb; ++a)
     for (std::size_t b = a + 1; b < nb; ++b) {
       if (!fit[a].ok || !fit[b].ok) continue;
       for (std::size_t q : original.common_points(a, b)) {
-        auto pa = fit[a].motion(local[a][original.body(a).local(q)]);
-        auto pb = fit[b].motion(local[b][original.body(b).local(q)]);
-        double d = 0;
-        for (int k = 0; k < 3; ++k) d = (std::max)(d, std::abs(pa[std::size_t(k)] - pb[std::size_t(k)]));
+        double d = 0, dm = 0;
+        for (int mirrored = 0; mirrored < 2; ++mirrored) {
+          const auto pa = placed_by(a, q, mirrored), pb = placed_by(b, q, mirrored);
+          double& e = mirrored ? dm : d;
+          for (int k = 0; k < 3; ++k) e = (std::max)(e, std::abs(pa[std::size_t(k)] - pb[std::size_t(k)]));
+        }
         add(Residual::INCIDENCE, "point '" + original.label(q) + "' in '" + original.body(a).name + "' and '" + original.body(b).name + "'", d);
+        rep.max_incidence_mirrored = (std::max)(rep.max_incidence_mirrored, dm);
       }
     }
   for (const auto& d : original.distances()) {
@@ -424,6 +455,7 @@ Residual_report residuals(const Rigid_body_collection<Traits>& original, const C
     }
     add(Residual::DISTANCE, what, std::abs(dist2(u, w) - CGAL::to_double(d.squared)));
   }
+  rep.max_distance_mirrored = rep.max_distance;  // (bars and distances have no handedness)
   return rep;
 }
 

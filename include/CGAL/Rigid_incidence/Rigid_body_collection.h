@@ -250,6 +250,13 @@ public:
   }
   /// The aliases, in the order they were declared.
   const std::vector<Alias>& aliases() const { return aliases_; }
+  /// The label of the point `l` names: `l` itself, or the label an alias `l` stands for.
+  const std::string& resolve_alias(const std::string& l) const
+  {
+    for (const Alias& a : aliases_)
+      if (a.alias == l) return a.label;
+    return l;
+  }
 
   /// Names the body in whose local frame results are reported (default: the first body).
   void set_frame(const std::string& body_name)

@@ -7,6 +7,7 @@
 #ifndef CGAL_RIGID_INCIDENCE_SOLVER_RESULT_H
 #define CGAL_RIGID_INCIDENCE_SOLVER_RESULT_H
 
+#include <atomic>
 #include <cstddef>
 #include <string>
 #include <utility>
@@ -70,6 +71,9 @@ struct Subdivision_solver_parameters
   double maximal_coefficients = 33554432;
   /// Wall-clock budget in seconds (0: none); what is left when it runs out is `PENDING`.
   double maximal_seconds = 0;
+  /// A flag another thread or a signal handler may set (null: none): the solve stops at the
+  /// next box once it reads true, and what is left is `PENDING` ("interrupted").
+  const std::atomic<bool>* interrupt = nullptr;
   /// Fast, non-certified mode: plain double subdivision, Newton polish, no existence proof.
   /// Roots come back with `certified == false`.
   bool fast = false;

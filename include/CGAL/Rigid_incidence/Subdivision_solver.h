@@ -439,8 +439,10 @@ private:
       std::vector<Node> stack;
       stack.push_back(make_node(dlo, dhi, 0));
       while (!stack.empty()) {
-        if (result.statistics.boxes >= P.maximal_boxes || (P.maximal_seconds > 0 && seconds() > P.maximal_seconds)) {
-          pending_reason = result.statistics.boxes >= P.maximal_boxes ? "box budget exhausted" : "time budget exhausted";
+        const bool interrupted = P.interrupt && P.interrupt->load(std::memory_order_relaxed);
+        if (result.statistics.boxes >= P.maximal_boxes || (P.maximal_seconds > 0 && seconds() > P.maximal_seconds) || interrupted) {
+          pending_reason = interrupted ? "interrupted"
+                           : result.statistics.boxes >= P.maximal_boxes ? "box budget exhausted" : "time budget exhausted";
           for (auto& x : stack) pending_nodes.push_back(std::move(x));
           stack.clear();
           break;
@@ -753,13 +755,13 @@ private:
         const unsigned a = idx[k];
         if (sh.variables[k] == p) {
           for (unsigned a2 = 0; a2 <= a; ++a2)
-            expand(k + 1, coef * IT(internal::binomial(a, a2)) * cp[k][a - a2] * sp[k][a2], at, pdeg + a2);
+            expand(k + 1, coef * internal::binomial_enclosure<IT>(a, a2) * cp[k][a - a2] * sp[k][a2], at, pdeg + a2);
           return;
         }
         for (unsigned a1 = 0; a1 <= a; ++a1)
           for (unsigned a2 = 0; a1 + a2 <= a; ++a2) {
             if (a2 > 0 && g[sh.variables[k]] == 0) break;
-            expand(k + 1, coef * IT(internal::binomial(a, a1) * internal::binomial(a - a1, a2)) * cp[k][a - a1 - a2] * sp[k][a1] * gp[k][a2],
+            expand(k + 1, coef * internal::binomial_enclosure<IT>(a, a1) * internal::binomial_enclosure<IT>(a - a1, a2) * cp[k][a - a1 - a2] * sp[k][a1] * gp[k][a2],
                    at + a1 * ts.strides[tk[k]], pdeg + a2);
           }
       };

@@ -67,6 +67,14 @@ template <class IT> std::array<IT, 3> sub(const std::array<IT, 3>& a, const std:
 template <class IT> std::array<IT, 3> cross(const std::array<IT, 3>& a, const std::array<IT, 3>& b)
 { return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}; }
 
+// Two reasons (for a double placement, a singular configuration), each said once.
+inline std::string joined_reasons(const std::string& a, const std::string& b)
+{
+  if (a.empty() || b.find(a) != std::string::npos) return b;
+  if (b.empty() || a.find(b) != std::string::npos) return a;
+  return a + "; " + b;
+}
+
 template <class T> struct is_interval_nt : std::false_type {};
 template <bool P> struct is_interval_nt<CGAL::Interval_nt<P>> : std::true_type {};
 
@@ -930,13 +938,7 @@ private:
     out_frames_.push_back(plan_.map_to_given ? Placement_frame<W>() : frame_);
   }
 
-  // Two reasons for a double placement, each said once.
-  static std::string also(const std::string& a, const std::string& b)
-  {
-    if (a.empty() || b.find(a) != std::string::npos) return b;
-    if (b.empty() || a.find(b) != std::string::npos) return a;
-    return a + "; " + b;
-  }
+  static std::string also(const std::string& a, const std::string& b) { return joined_reasons(a, b); }
 
   // After step k placed its points: its distance and orientation checks, then the next step.
   void next(std::size_t k, const std::string& singular, bool undecided)

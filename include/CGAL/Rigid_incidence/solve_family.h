@@ -214,7 +214,10 @@ Family_result solve_family(const Rigid_body_collection<Traits>& original, const 
   out.range = {CGAL::to_double(lo), CGAL::to_double(hi)};
   Family_statistics& st = out.statistics;
   const std::size_t npos = Rigid_body_collection<Traits>::npos;
-  const std::size_t ia = original.point_index(a), ib = original.point_index(b);
+  // (a label made one point with another by a distance of 0 stands for that point)
+  const std::string& ra = original.resolve_alias(a);
+  const std::string& rb = original.resolve_alias(b);
+  const std::size_t ia = original.point_index(ra), ib = original.point_index(rb);
   if (ia == npos) throw Input_error(what + ": no point '" + a + "' in the scene");
   if (ib == npos) throw Input_error(what + ": no point '" + b + "' in the scene");
   if (ia == ib) throw Input_error(what + ": a distance must join two different points");
@@ -233,7 +236,7 @@ Family_result solve_family(const Rigid_body_collection<Traits>& original, const 
   for (int k = 1; k <= 3; ++k) {
     Rigid_body_collection<Traits> ck = original;
     try {
-      ck.add_distance(a, b, typename Traits::FT(k), what);
+      ck.add_distance(ra, rb, typename Traits::FT(k), what);
       cs.push_back(standardize(ck));
     } catch (const Input_error& e) {
       throw Input_error(what + ": " + e.what());
@@ -396,7 +399,7 @@ Family_result solve_family(const Rigid_body_collection<Traits>& original, const 
         f.max_residual = rep.max();
         const double size = internal::configuration_size(f.configuration);
         if (!internal::verified(rep, parameters.scene.residual_threshold, size)) {
-          if (rep.mirrored && rep.complete) continue;  // needs a reflection: not a configuration
+          if (internal::mirror_image(rep, parameters.scene.residual_threshold, size)) continue;  // a mirror image: not a configuration
           Scene_unresolved un;
           un.reason = "fold not verified in the original system (residual " + std::to_string(f.max_residual) + ")";
           un.charts = charts;

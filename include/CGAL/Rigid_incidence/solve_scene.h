@@ -20,6 +20,7 @@
 #include <CGAL/Rigid_incidence/enclose_coordinates.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <functional>
 #include <cmath>
@@ -42,6 +43,18 @@ struct Orientation_inequality
 {
   std::array<std::string, 4> points;  ///< the labels A, B, C, D
   bool negative = false;              ///< the other side
+};
+
+/// \ingroup PkgRigidIncidenceSolver
+/// How far a `solve_scene()` has got, as `Scene_solve_parameters::progress` is told.
+struct Scene_solve_progress
+{
+  std::size_t combinations_done = 0;   ///< combinations of charts and placements solved (at this precision)
+  std::size_t combinations_total = 0;  ///< how many there are (0: more than \f$2^{62}\f$)
+  std::size_t boxes = 0;               ///< boxes the solver has examined so far (at this precision)
+  std::size_t configurations = 0;      ///< configurations found so far (at this precision)
+  unsigned coefficient_precision = 53; ///< bits of the coefficients of this pass (0: exact)
+  double seconds = 0;                  ///< since the solve began (all precisions)
 };
 
 /// \ingroup PkgRigidIncidenceSolver
@@ -75,6 +88,19 @@ struct Scene_solve_parameters
   /// answer is complete (needs MPFI; below 128: never). `Scene_solve_result::precision_history`
   /// says what each lower precision gave.
   unsigned maximal_coefficient_precision = 256;
+  /// Wall-clock limit in seconds for the whole solve, precision retries included (0: none).
+  /// When it is reached the combinations of charts and placements not yet solved are left
+  /// out, the solve under way keeps what it certified and leaves the rest pending, and
+  /// `Scene_solve_result::limits` says "time limit of S s reached ..." (the answer is not
+  /// complete); a precision retry it cuts short is dropped for the answer before it. The
+  /// placements are enumerated before it is looked at (see the manual's table of limits).
+  double maximal_seconds = 0;
+  /// A flag another thread or a signal handler may set (null: none): the solve stops as the
+  /// time limit does, and `limits` says "interrupted".
+  const std::atomic<bool>* interrupt = nullptr;
+  /// Called after each combination of charts and placements is solved (empty: never), from
+  /// the thread that called `solve_scene()`; the command-line tool prints it on a terminal.
+  std::function<void(const Scene_solve_progress&)> progress;
 };
 
 /// \ingroup PkgRigidIncidenceSolver
@@ -349,6 +375,15 @@ inline bool verified(const Residual_report& r, double threshold, double size)
   return r.max_incidence <= threshold * size && r.max_distance <= threshold * size * size;
 }
 
+// A root of a system blind to handedness that is a mirror image, not a configuration: some
+// body fits only mirrored, and with those bodies mirrored every residual is within the
+// threshold (so the points are an exact mirrored solution, not points that fit no body: those
+// are not verified, and are said so, never dropped).
+inline bool mirror_image(const Residual_report& r, double threshold, double size)
+{
+  return r.complete && r.mirrored && r.max_incidence_mirrored <= threshold * size && r.max_distance_mirrored <= threshold * size * size;
+}
+
 // The largest residual relative to `size` (see Scene_configuration::max_relative_residual).
 inline double relative_residual(const Residual_report& r, double size)
 {
@@ -520,8 +555,9 @@ bool add_configurations(Scene_piece& q, const std::vector<std::vector<double>>& 
   for (const auto& p : points) {
     q.configurations.push_back(configuration(r, std::vector<double>(p.begin(), p.begin() + long(n)), variants));
     Residual_report rep = residuals(original, q.configurations.back());
-    if (!verified(rep, threshold, configuration_size(q.configurations.back()))) {
-      if (rep.mirrored && rep.complete) spurious = true;
+    const double size = configuration_size(q.configurations.back());
+    if (!verified(rep, threshold, size)) {
+      if (mirror_image(rep, threshold, size)) spurious = true;
       else q.certified = false;
       if (failed_check) *failed_check = true;
     }
@@ -629,10 +665,18 @@ namespace internal {
 template <class IT, class NT, class Traits>
 Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& original, const Rigid_body_collection<Traits>& c,
                                const Incidence_tree& tree, const Well_formed_selection& selection,
-                               const Scene_solve_parameters& parameters)
+                               const Scene_solve_parameters& parameters, double seconds_before = 0)
 {
   typedef std::chrono::steady_clock Clock;
   auto since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
+  const Clock::time_point started = Clock::now();
+  // why the solve must stop now (null: it need not): parameters.maximal_seconds is what is
+  // left of the whole solve's limit when this pass began
+  auto stop_reason = [&]() -> const char* {
+    if (parameters.interrupt && parameters.interrupt->load(std::memory_order_relaxed)) return "interrupted";
+    if (parameters.maximal_seconds > 0 && since(started) >= parameters.maximal_seconds) return "time limit";
+    return nullptr;
+  };
   Scene_solve_result out;
   out.fast = parameters.solver.fast;
   Scene_solve_statistics& st = out.statistics;
@@ -650,6 +694,35 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
   for (std::size_t b = 0; b < c.number_of_bodies(); ++b)
     if (!c.body(b).all_coordinates())
       enumerations[b] = internal::cached_placements<CGAL::Interval_nt<false>>(c, b, parameters.maximal_placements);
+  // The reduced system's coefficients come from the enumeration at its own precision (NT),
+  // the counts and configurations from the one above: where a decision depends on the
+  // precision they could differ in length or order. Placement i must be the same in both:
+  // else its combinations are solved no further than both lists go, and the answer says so.
+  if constexpr (!std::is_same<NT, CGAL::Interval_nt<false>>::value && !std::is_same<NT, CGAL::Gmpq>::value)
+    for (std::size_t b = 0; b < c.number_of_bodies(); ++b) {
+      if (!enumerations[b]) continue;
+      const auto own = internal::cached_placements<NT>(c, b, parameters.maximal_placements);
+      const auto& d = enumerations[b]->placements;
+      const auto& g = own->placements;
+      std::string why;
+      if (g.size() != d.size())
+        why = std::to_string(g.size()) + " placement(s) at " + std::to_string(own->precision) + " bits, " + std::to_string(d.size()) +
+              " in the enumeration the counts use";
+      for (std::size_t i = 0; why.empty() && i < g.size(); ++i)
+        for (std::size_t k = 0; why.empty() && k < g[i].coordinates.size() && k < d[i].coordinates.size(); ++k)
+          for (std::size_t x = 0; x < 3; ++x) {
+            const auto gi = CGAL::to_interval(g[i].coordinates[k][x]);
+            if (gi.second < d[i].coordinates[k][x].inf() || d[i].coordinates[k][x].sup() < gi.first) {
+              why = "placement " + std::to_string(i + 1) + " puts point '" + c.label(c.body(b).points[k]) + "' elsewhere at " +
+                    std::to_string(own->precision) + " bits";
+              break;
+            }
+          }
+      if (why.empty()) continue;
+      out.limits.push_back("placements of body '" + c.body(b).name + "' differ between precisions (" + why +
+                           "): the configurations of the placements past the shorter list, or of mismatched ones, may be missing");
+      if (b < radix_p.size() && radix_p[b] > int(g.size())) radix_p[b] = (std::max)(1, int(g.size()));
+    }
   for (const auto& r : out.placements) {
     if (!r.complete)
       out.limits.push_back("body '" + r.body + "' has more than " + std::to_string(r.placements) +
@@ -697,6 +770,20 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
   auto next_nc = [&](std::vector<int>& v, std::size_t& tried) {
     return ++tried < parameters.maximal_placements && internal::next_combination(v, nc_radix);
   };
+  // How a body's double placements reach a configuration: through the placement the
+  // configuration uses, where the body's placements are enumerated (radix_p, nc_bodies);
+  // else (its points all fixed by the system) through any of them, so on every configuration
+  // when every placement is double, and never otherwise. Said once per body (singular_body).
+  std::vector<const Body_enclosure<CGAL::Interval_nt<false>>*> always_double(c.number_of_bodies(), nullptr);
+  std::vector<bool> chosen_double(c.number_of_bodies(), false);
+  for (std::size_t b = 0; b < enumerations.size(); ++b) {
+    if (!enumerations[b] || !singular_body[b].empty()) continue;
+    const auto& list = enumerations[b]->placements;
+    const bool enumerated = (b < radix_p.size() && radix_p[b] > 1) || std::find(nc_bodies.begin(), nc_bodies.end(), b) != nc_bodies.end() ||
+                            list.size() == 1;
+    if (enumerated) chosen_double[b] = std::any_of(list.begin(), list.end(), [](const auto& e) { return e.singular; });
+    else if (!list.empty() && std::all_of(list.begin(), list.end(), [](const auto& e) { return e.singular; })) always_double[b] = &list[0];
+  }
   std::vector<int> placements(c.number_of_bodies(), 0);
   Reduced_system<Traits, NT> first(c, tree, selection);
   st.reduce_seconds += since(t0);
@@ -718,7 +805,7 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
   for (std::size_t q = 0; q < parameters.inequalities.size(); ++q) {
     std::array<std::size_t, 4> pts;
     for (std::size_t k = 0; k < 4; ++k) {
-      pts[k] = c.point_index(parameters.inequalities[q].points[k]);
+      pts[k] = c.point_index(original.resolve_alias(parameters.inequalities[q].points[k]));  // (a coincidence: its point)
       if (pts[k] == Rigid_body_collection<Traits>::npos)
         throw Input_error("inequality " + std::to_string(q) + ": no point '" + parameters.inequalities[q].points[k] + "' in the scene");
     }
@@ -781,10 +868,29 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
   std::vector<Candidate> found;
   std::vector<internal::Scene_piece> pieces;
   std::string positive;
+  // the combinations, counted for the progress and for a solve stopped early
+  std::size_t per_placement = 1, total = 1;
+  for (int x : radix_c) per_placement = per_placement > (std::size_t(1) << 62) / std::size_t(x) ? 0 : per_placement * std::size_t(x);
+  total = per_placement;
+  for (int x : radix_p) total = total == 0 || total > (std::size_t(1) << 62) / std::size_t(x) ? 0 : total * std::size_t(x);
+  std::size_t done = 0;
+  const char* stopped = nullptr;
+  auto report = [&]() {
+    if (!parameters.progress) return;
+    Scene_solve_progress g;
+    g.combinations_done = done;
+    g.combinations_total = total;
+    g.boxes = st.boxes + st.curve_boxes;
+    g.configurations = found.size();
+    g.coefficient_precision = out.coefficient_precision;
+    g.seconds = seconds_before + since(started);
+    parameters.progress(g);
+  };
   do {
-    if (!placements_fit(placements)) { ++st.placements_excluded; continue; }
+    if (!placements_fit(placements)) { ++st.placements_excluded; done += per_placement; continue; }
     std::vector<int> charts(radix_c.size(), 0);
     do {
+      if ((stopped = stop_reason())) break;
       auto t1 = Clock::now();
       Reduced_system<Traits, NT> r(c, tree, selection, charts, Rotation_form::QUATERNION_CHARTS, placements);
       Polynomial_system<NT> sys = r.system();
@@ -807,7 +913,14 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
         root.certified = true;
         res.roots.push_back(root);
       } else {
-        res = Subdivision_solver<IT>(parameters.solver).solve(sys);
+        // what is left of the whole solve's time, and its interrupt, bound this solve too
+        Subdivision_solver_parameters sp = parameters.solver;
+        if (!sp.interrupt) sp.interrupt = parameters.interrupt;
+        if (parameters.maximal_seconds > 0) {
+          const double left = (std::max)(parameters.maximal_seconds - since(started), 1e-3);
+          sp.maximal_seconds = sp.maximal_seconds > 0 ? (std::min)(sp.maximal_seconds, left) : left;
+        }
+        res = Subdivision_solver<IT>(sp).solve(sys);
       }
       double ts = since(t2);
       st.solve_seconds += ts;
@@ -979,7 +1092,7 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
         for (std::size_t b = 0; b < singular_body.size(); ++b)
           if (!singular_body[b].empty()) {
             s.singular = true;
-            s.singular_reason += (s.singular_reason.empty() ? "" : "; ") + singular_body[b];
+            s.singular_reason = joined_reasons(s.singular_reason, singular_body[b]);
           }
         // one configuration per placement of the bodies outside the covering set that fits
         std::vector<Scene_configuration> variants_found;
@@ -990,19 +1103,12 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
           Scene_configuration v = s;
           for (std::size_t k = 0; k < nc_bodies.size(); ++k) v.placements[nc_bodies[k]] = nc[k];
           for (std::size_t b = 0; b < enumerations.size(); ++b) {
-            if (!enumerations[b] || !singular_body[b].empty()) continue;  // none, or said for every placement
-            const auto& list = enumerations[b]->placements;
-            // the placement this configuration uses: its own where the body's placements are
-            // enumerated (radix_p, nc_bodies); else (its points all fixed by the system) any of
-            // them, so the flag only when every placement has it
-            const bool enumerated = (b < radix_p.size() && radix_p[b] > 1) ||
-                                    std::find(nc_bodies.begin(), nc_bodies.end(), b) != nc_bodies.end() || list.size() == 1;
-            std::size_t i = enumerated && b < v.placements.size() ? std::size_t(v.placements[b]) : 0;
-            if (!enumerated)
-              for (std::size_t k = 0; k < list.size(); ++k) if (!list[k].singular) { i = list.size(); break; }
-            if (i < list.size() && list[i].singular && v.singular_reason.find(list[i].singular_reason) == std::string::npos) {
+            const Body_enclosure<CGAL::Interval_nt<false>>* e = always_double[b];
+            if (chosen_double[b] && b < v.placements.size() && std::size_t(v.placements[b]) < enumerations[b]->placements.size())
+              e = &enumerations[b]->placements[std::size_t(v.placements[b])];
+            if (e && e->singular) {
               v.singular = true;
-              v.singular_reason += (v.singular_reason.empty() ? "" : "; ") + list[i].singular_reason;
+              v.singular_reason = joined_reasons(v.singular_reason, e->singular_reason);
             }
           }
           v.configuration = configuration(r, root.approximation, v.placements);
@@ -1032,7 +1138,8 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
         if (variants_found.empty()) {
           if (from_region[ri]) { regions_left.push_back(*from_region[ri]); continue; }  // not a configuration: stays unresolved
           s = first_failed;
-          if (s.residuals.mirrored && s.residuals.complete) { ++st.spurious; continue; }  // needs a reflection: not a configuration
+          // a mirror image of the scene (some body reflected), not a configuration
+          if (internal::mirror_image(s.residuals, parameters.residual_threshold, internal::configuration_size(s.configuration))) { ++st.spurious; continue; }
           // not verified for another reason: say so rather than drop it
           out.unresolved.push_back(unresolved(Box_class::UNKNOWN, "root of the reduced system not verified in the original system (residual " +
                                                   std::to_string(s.max_residual) + ")", s.parameters, 1, s.configuration));
@@ -1062,8 +1169,19 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
       }
       add_regions(regions_left);
       st.verify_seconds += since(t3);
+      ++done;
+      report();
     } while (internal::next_combination(charts, radix_c));
-  } while (internal::next_combination(placements, radix_p));
+  } while (!stopped && internal::next_combination(placements, radix_p));
+  if (stopped) {
+    std::ostringstream why;
+    why << (std::string(stopped) == "interrupted" ? std::string("interrupted")
+                                                  : "time limit of " + short_number(seconds_before + parameters.maximal_seconds) + " s reached")
+        << " after " << short_number(seconds_before + since(started)) << " s: " << done << " of ";
+    if (total) why << total; else why << "more than 2^62";
+    why << " combinations of charts and placements solved (a solve it cut short left its rest pending), the others not solved";
+    out.limits.push_back(why.str());
+  }
   if (!positive.empty()) out.diagnosis = positive;
   for (auto& f : found) out.configurations.push_back(std::move(f.s));
   out.curves = internal::join_pieces(pieces, 1e-7);
@@ -1123,6 +1241,7 @@ Scene_solve_result solve_scene_with_precision(const Rigid_body_collection<Traits
                                               const Scene_solve_parameters& parameters)
 {
   auto t0 = std::chrono::steady_clock::now();
+  const auto begun = t0;
   Scene_solve_result r = solve_scene_unscaled<IT, NT>(original, c, tree, selection, parameters);
   if constexpr (std::is_same<NT, CGAL::Gmpq>::value) {
     return r;  // exact coefficients (the solver raises its own precision)
@@ -1133,13 +1252,32 @@ Scene_solve_result solve_scene_with_precision(const Rigid_body_collection<Traits
       const unsigned bits = r.coefficient_precision < 128 ? 128 : 2 * r.coefficient_precision;
       if (bits > parameters.maximal_coefficient_precision) break;
       const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - begun).count();
+      // the whole solve's time limit and interrupt bound the retries too: one not begun, or
+      // cut short, leaves the answer before it (not complete), and says so
+      const bool interrupted = parameters.interrupt && parameters.interrupt->load(std::memory_order_relaxed);
+      if (interrupted || (parameters.maximal_seconds > 0 && elapsed >= parameters.maximal_seconds)) {
+        r.limits.push_back(std::string(interrupted ? "interrupted" : "time limit of " + short_number(parameters.maximal_seconds) + " s reached") +
+                           " before the retry with coefficients at " + std::to_string(bits) + " bits");
+        break;
+      }
       std::vector<std::string> history = r.precision_history;
       history.push_back(precision_note(r, seconds));
       t0 = std::chrono::steady_clock::now();
       Scene_solve_parameters p = parameters;
       p.solver.precision = bits;
+      if (parameters.maximal_seconds > 0) p.maximal_seconds = parameters.maximal_seconds - elapsed;
       Solver_precision_guard<CGAL::Gmpfi> guard(bits);
-      r = solve_scene_unscaled<CGAL::Gmpfi, CGAL::Gmpfi>(original, c, tree, selection, p);
+      Scene_solve_result retry = solve_scene_unscaled<CGAL::Gmpfi, CGAL::Gmpfi>(original, c, tree, selection, p, elapsed);
+      const bool cut = std::any_of(retry.limits.begin(), retry.limits.end(), [](const std::string& l) {
+        return l.rfind("interrupted", 0) == 0 || l.rfind("time limit of", 0) == 0;
+      });
+      if (cut) {
+        r.limits.push_back("the retry with coefficients at " + std::to_string(bits) + " bits was cut short (" + retry.limits.back() +
+                           "); this is the answer at " + std::to_string(r.coefficient_precision) + " bits");
+        break;
+      }
+      r = std::move(retry);
       r.precision_history = std::move(history);
     }
     if (!r.precision_history.empty() && r.diagnosis.rfind("positive_dimensional", 0) == 0)

@@ -340,6 +340,50 @@ if(TARGET rigid_incidence)
                      "-DCHECK_ARGS=STDOUT_FILE|${_ri_d}/stewart_gough40.json|--solutions|40|--certified|40|--complete|true"
                      -P ${_ri_cli_script})
   endif()
+  # a time limit for the whole solve, and the interrupt (issue 28, item 5): a scene whose solve
+  # runs for 150 s (a chain of 10 tetrahedra) stops, and its partial answer is valid JSON whose solutions hold
+  # in the scene and which says it is not complete (exit status 0 at the time limit, 130 or
+  # 143 after SIGINT or SIGTERM, sent by coreutils' timeout)
+  set(_ri_long ${CMAKE_CURRENT_LIST_DIR}/../data/tetrahedron_chain10.json)
+  add_test(NAME cli_solve_max_seconds
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${_ri_long}|--json|--max-seconds|2" -DEXPECT_RC=0
+                   "-DEXPECT_STDOUT=time limit of 2 s reached"
+                   "-DSTDOUT_FILE=${CMAKE_CURRENT_BINARY_DIR}/cli_solve_max_seconds.json"
+                   "-DCHECK_PROGRAM=$<TARGET_FILE:solve_json_check>" "-DCHECK_ARGS=STDOUT_FILE|${_ri_long}|--complete|false"
+                   -P ${_ri_cli_script})
+  add_test(NAME cli_solve_max_seconds_text
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${_ri_long}|--max-seconds|1|--quiet" -DEXPECT_RC=0
+                   "-DEXPECT_STDOUT=limit reached: time limit of 1 s reached&&NOT complete" -P ${_ri_cli_script})
+  find_program(RIGID_INCIDENCE_TIMEOUT timeout)
+  if(RIGID_INCIDENCE_TIMEOUT)
+    foreach(_sig INT TERM)
+      if(_sig STREQUAL "INT")
+        set(_rc 130)
+      else()
+        set(_rc 143)
+      endif()
+      add_test(NAME cli_solve_sig${_sig}
+               COMMAND ${CMAKE_COMMAND} "-DTOOL=${RIGID_INCIDENCE_TIMEOUT}"
+                       "-DARGS=--preserve-status|-s|${_sig}|3|${_ri_tool}|solve|${_ri_long}|--json" -DEXPECT_RC=${_rc}
+                       "-DEXPECT_STDOUT=\"interrupted after"
+                       "-DSTDOUT_FILE=${CMAKE_CURRENT_BINARY_DIR}/cli_solve_sig${_sig}.json"
+                       "-DCHECK_PROGRAM=$<TARGET_FILE:solve_json_check>" "-DCHECK_ARGS=STDOUT_FILE|${_ri_long}|--complete|false"
+                       -P ${_ri_cli_script})
+    endforeach()
+  endif()
+  # (a limit that failed to stop the solve would run for minutes: fail after 5)
+  foreach(_t cli_solve_max_seconds cli_solve_max_seconds_text)
+    set_tests_properties(${_t} PROPERTIES TIMEOUT 300)
+  endforeach()
+  if(RIGID_INCIDENCE_TIMEOUT)
+    set_tests_properties(cli_solve_sigINT cli_solve_sigTERM PROPERTIES TIMEOUT 300)
+  endif()
+  add_test(NAME cli_usage_max_seconds_negative
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${_ri_d}/tetra.json|--max-seconds|-1" -DEXPECT_RC=1
+                   "-DEXPECT_STDERR=--max-seconds: '-1' is not a positive number" -P ${_ri_cli_script})
+  add_test(NAME cli_usage_max_seconds_analyze
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=analyze|${_ri_d}/tetra.json|--max-seconds|1" -DEXPECT_RC=1
+                   "-DEXPECT_STDERR=--max-seconds is an option of solve" -P ${_ri_cli_script})
   # a scene that turns freely about an axis of three points, which the dof count calls rigid:
   # diagnosed, not refused (trace_curves took 0 equations in 1 variable for an error)
   add_test(NAME cli_solve_free_turn_about_axis

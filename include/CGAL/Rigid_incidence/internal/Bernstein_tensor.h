@@ -56,11 +56,22 @@ struct Tensor_shape
   }
 };
 
-// The binomial coefficient C(n, k), exact for the degrees of the solver's equations.
+// The binomial coefficient C(n, k) in doubles: exact for n <= 50 (every partial product
+// C(n - k + t, t) t stays below 2^53), rounded above; use binomial_enclosure() there.
 inline double binomial(unsigned n, unsigned k)
 {
   double r = 1;
   for (unsigned t = 1; t <= k; ++t) r = r * (n - k + t) / t;
+  return r;
+}
+
+// C(n, k) as an interval that contains it: the exact double up to n = 50, above it the
+// product of the factors (n - k + t) / t in outward-rounded interval arithmetic.
+template <class IT> IT binomial_enclosure(unsigned n, unsigned k)
+{
+  if (n <= 50) return IT(binomial(n, k));
+  IT r(1);
+  for (unsigned t = 1; t <= k; ++t) r = r * IT(double(n - k + t)) / IT(double(t));
   return r;
 }
 
@@ -88,7 +99,7 @@ std::vector<IT> to_bernstein(const Tensor_shape& s, std::vector<IT> a, const std
     ratio.resize((d + 1) * (d + 1));
     for (unsigned i = 0; i <= d; ++i)
       for (unsigned k = 0; k <= i; ++k) {
-        // (binomial() is exact up to degree 50)
+        // (binomial() is exact up to degree 50; above, binomial_ratio() encloses the ratio)
         ratio[i * (d + 1) + k] = k == 0 || i == d ? IT(1) : d <= 50 ? IT(binomial(i, k)) / IT(binomial(d, k)) : binomial_ratio<IT>(i, k, d);
       }
     f.resize(d + 1);
@@ -188,9 +199,11 @@ public:
       for (unsigned q = 0; q <= D; ++q)
         for (unsigned i = 0; i <= d && i <= q; ++i) {
           if (q - i > D - d) continue;
-          const double num = binomial(d, i) * binomial(D - d, q - i), den = binomial(D, q);
-          st.weight[q * (d + 1) + i] = IT(num) / IT(den);
-          st.unit[q * (d + 1) + i] = num == den;
+          st.weight[q * (d + 1) + i] = binomial_enclosure<IT>(d, i) * binomial_enclosure<IT>(D - d, q - i) / binomial_enclosure<IT>(D, q);
+          // by Vandermonde's identity the weights of row q sum to 1: one term is 1 exactly
+          // when it is the row's only one (q = 0, q = D, or d = 0)
+          const unsigned i0 = q > D - d ? q - (D - d) : 0, i1 = (std::min)(q, d);
+          st.unit[q * (d + 1) + i] = i0 == i1;
         }
       cur = st.to;
       steps_.push_back(std::move(st));
