@@ -818,6 +818,52 @@ static void random_scenes(Rng& g, int wanted, int epick_every)
             << tried << " generated\n";
 }
 
+// A point W held on a line of a body by two distances whose spheres touch (a rail point)
+// becomes a point of that body where the distances put it, and the collection says why every
+// configuration is singular. Oracle: W placed here by hand on the line of A = (0,0,0) and
+// V = (4,0,0), between them, beyond V and before A (W also on a bar to another body, as a
+// rail point is). Spheres that do not touch attach nothing.
+template <class Traits> static void rail_points(const std::string& kernel)
+{
+  struct Case { const char* aw; const char* vw; double x; bool attached; };
+  const Case cases[] = {{"1", "9", 1, true}, {"36", "4", 6, true}, {"4", "36", -2, true}, {"4", "9", 0, false}};
+  for (const Case& k : cases) {
+    const std::string name = kernel + " rail point, |AW|^2 = " + k.aw + ", |VW|^2 = " + k.vw;
+    // W also on a bar to G of another body (so no implied body takes it in)
+    std::istringstream in(std::string(R"({"format": "rigid-incidence-scene/1", "bodies": [
+      {"name": "B", "points": {"A": [0, 0, 0], "V": [4, 0, 0], "C": [0, 3, 0]}},
+      {"name": "E", "points": {"G": [0, 0, 0], "H": [2, 0, 0], "K": [0, 1, 0]}},
+      {"name": "bar", "points": {"W": [0, 0, 0], "G": [0, 0, 5]}}],
+      "distances": [{"between": ["W", "A"], "squared": ")") + k.aw + R"("}, {"between": ["W", "V"], "squared": ")" + k.vw + R"("}]})");
+    RI::Rigid_body_collection<Traits> c;
+    try {
+      c = RI::standardize(RI::make_collection<Traits>(RI::read_scene(in, name)));
+    } catch (const RI::Input_error& e) {
+      CHECK(false, name << ": refused: " << e.what());
+      continue;
+    }
+    CHECK(c.singular_notes().size() == (k.attached ? 1u : 0u), name << ": " << c.singular_notes().size() << " singular note(s)");
+    if (!k.attached || c.singular_notes().empty()) continue;
+    CHECK(c.singular_notes()[0].find("'W'") != std::string::npos, name << ": the note does not name W: " << c.singular_notes()[0]);
+    const std::size_t W = c.point_index("W"), A = c.point_index("A");
+    bool found = false;
+    for (const auto& b : c.bodies()) {
+      if (!b.contains(W) || !b.contains(A) || !b.all_coordinates()) continue;
+      found = true;
+      const auto& pw = b.coordinates[b.local(W)];
+      const auto& pa = b.coordinates[b.local(A)];
+      // in the body's frame (B's: A at the origin, V on +x), W = (x, 0, 0)
+      const double dx = CGAL::to_double(Traits::x(pw) - Traits::x(pa)), dy = CGAL::to_double(Traits::y(pw) - Traits::y(pa)),
+                   dz = CGAL::to_double(Traits::z(pw) - Traits::z(pa));
+      CHECK(std::abs(dx - k.x) < 1e-12 && std::abs(dy) < 1e-12 && std::abs(dz) < 1e-12,
+            name << ": W at (" << dx << ", " << dy << ", " << dz << ") from A, expected (" << k.x << ", 0, 0)");
+    }
+    CHECK(found, name << ": W is not a point of a body with coordinates that holds A");
+    for (const auto& d : c.distances())
+      CHECK(!(d.a == W || d.b == W) || c.label(d.a) == "G" || c.label(d.b) == "G", name << ": a distance of W is left: " << d.name);
+  }
+}
+
 int main()
 {
   CGAL::Real_timer timer;
@@ -833,6 +879,8 @@ int main()
   degenerate<Epick>(g);
   extremes(g);
   double_kernel_tolerance(g);
+  rail_points<Exact>("exact");
+  rail_points<Epick>("epick");
   std::cout << "fixed cases done in " << timer.time() << " s\n";
   random_scenes(g, 120, 3);
   std::cout << (failures ? "FAILED" : "OK") << ": " << checks << " checks, " << failures << " failures, " << timer.time()

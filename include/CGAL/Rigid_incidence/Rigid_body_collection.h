@@ -250,6 +250,14 @@ public:
   }
   /// The aliases, in the order they were declared.
   const std::vector<Alias>& aliases() const { return aliases_; }
+  /// Why every configuration of the collection is a multiple root of its scene's equations
+  /// although `standardize()` resolved the cause exactly (a point held on a line of a body by
+  /// two distances whose spheres touch there); empty: no such cause. `solve_scene()` marks
+  /// every configuration `singular` with these reasons, unless the scene's Jacobian there has
+  /// full rank (further equations hold the point: see `jacobian_conditioning()`).
+  const std::vector<std::string>& singular_notes() const { return singular_notes_; }
+  /// Adds a reason to `singular_notes()`.
+  void add_singular_note(const std::string& why) { singular_notes_.push_back(why); }
   /// The label of the point `l` names: `l` itself, or the label an alias `l` stands for.
   const std::string& resolve_alias(const std::string& l) const
   {
@@ -353,6 +361,7 @@ private:
   std::vector<Body> bodies_;
   std::vector<Distance> distances_;
   std::vector<Alias> aliases_;
+  std::vector<std::string> singular_notes_;
   std::string frame_;
 };
 

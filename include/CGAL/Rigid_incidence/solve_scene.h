@@ -1112,6 +1112,13 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
             }
           }
           v.configuration = configuration(r, root.approximation, v.placements);
+          // a point standardize() put on a body's line where two distances' spheres touch: a
+          // double point of those two equations, which the scene's other equations may still
+          // hold (then, as below, the root is simple)
+          for (const std::string& why : c.singular_notes()) {
+            v.singular = true;
+            v.singular_reason = joined_reasons(v.singular_reason, why);
+          }
           // a height exactly 0 in a placement is a double point of the body's own distances;
           // further equations of the scene (a distance or a body it leaves to the reduced
           // system) may still hold the point: then the Jacobian has full rank and the root is simple

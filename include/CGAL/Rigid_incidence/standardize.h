@@ -87,6 +87,10 @@ public:
       changed = merge_one_pair();
       if (changed) continue;
       changed = add_implied_bodies();
+      if (changed) continue;
+      // last: a point the steps above left held by two touching spheres (where implied
+      // bodies took it in, with its other distances, their placements place it)
+      changed = attach_points_on_lines();
     }
     check_shared_pairs();
     // The frame passes to the body that absorbed or merged the frame body; that body keeps
@@ -189,6 +193,55 @@ private:
       changed = true;
     }
     return changed;
+  }
+
+  // A point W held by two distances to points A and V of a body with coordinates whose
+  // spheres touch (|AW| + |WV| = |AV|, or one of them the sum of the others, decided exactly:
+  // a degenerate triangle) has one place, W = A + t (V - A) with t = (|AW|^2 + |AV|^2 -
+  // |WV|^2) / 2|AV|^2, rational: it becomes a point of that body, and the two distances are
+  // absorbed. Left as equations the two touching spheres would make every root a double one
+  // of the reduced system, which intervals cannot certify (a rail point: a scene of 8 bodies
+  // ran for 20 minutes). The root is double in those two equations as well (perturbed, the
+  // spheres part or cut a circle): a configuration is singular, and says why, unless the
+  // scene's other equations hold W (solve_scene() measures the Jacobian).
+  bool attach_points_on_lines()
+  {
+    auto& ds = c_.mutable_distances();
+    auto& bodies = c_.mutable_bodies();
+    for (std::size_t i = 0; i < ds.size(); ++i)
+      for (std::size_t j = i + 1; j < ds.size(); ++j) {
+        const Distance &d1 = ds[i], &d2 = ds[j];
+        std::size_t W = Collection::npos;
+        for (std::size_t a : {d1.a, d1.b})
+          if (a == d2.a || a == d2.b) W = a;
+        if (W == Collection::npos) continue;
+        const std::size_t A = d1.a == W ? d1.b : d1.a, V = d2.a == W ? d2.b : d2.a;
+        if (A == V) continue;
+        for (Body& b : bodies) {
+          if (!b.all_coordinates() || b.contains(W) || !b.contains(A) || !b.contains(V)) continue;
+          const Point_3 &PA = b.coordinates[b.local(A)], &PV = b.coordinates[b.local(V)];
+          const FT av = Traits::squared_distance(PA, PV);
+          if (triangle_sign<Traits::has_exact_ft>(d1.squared, d2.squared, av) != CGAL::ZERO) continue;
+          const FT t = (d1.squared + av - d2.squared) / (FT(2) * av);
+          const Point_3 PW = Traits::point(Traits::x(PA) + t * (Traits::x(PV) - Traits::x(PA)), Traits::y(PA) + t * (Traits::y(PV) - Traits::y(PA)),
+                                           Traits::z(PA) + t * (Traits::z(PV) - Traits::z(PA)));
+          const std::size_t at = std::size_t(std::lower_bound(b.points.begin(), b.points.end(), W) - b.points.begin());
+          b.points.insert(b.points.begin() + std::ptrdiff_t(at), W);
+          b.has_coordinates.insert(b.has_coordinates.begin() + std::ptrdiff_t(at), true);
+          b.coordinates.insert(b.coordinates.begin() + std::ptrdiff_t(at), PW);
+          for (auto& e : b.squared_distances) { if (e.a >= at) ++e.a; if (e.b >= at) ++e.b; }
+          for (auto& o : b.orientations)
+            for (std::size_t* q : {&o.a, &o.b, &o.c, &o.d}) if (*q >= at) ++*q;
+          const std::string why = "'" + c_.label(W) + "' is held by " + d1.name + " and " + d2.name + " on the line of '" + c_.label(A) +
+                                  "' and '" + c_.label(V) + "' of body '" + b.name + "', where the two spheres touch (a double point of"
+                                  " those two equations, decided exactly)";
+          note(why + ": it becomes a point of that body, at " + c_.label(A) + " + " + to_text(t) + " (" + c_.label(V) + " - " +
+               c_.label(A) + "); a configuration is singular unless the scene's other equations hold it");
+          c_.add_singular_note(why);
+          return true;  // (absorb_distances() takes the two distances into the body, checked)
+        }
+      }
+    return false;
   }
 
   static std::string to_text(const FT& x)
