@@ -559,7 +559,7 @@ int solve(const RI::Scene& scene, const RI::Rigid_body_collection<Traits>& input
                   {"seconds", {{"analysis", analysis_seconds}, {"reduce", st.reduce_seconds}, {"solve", st.solve_seconds},
                                {"verify", st.verify_seconds}}}};
     std::cout << j.dump(2) << "\n";
-    return signal_received ? 128 + int(signal_received) : 0;
+    return signal_received && !r.complete() ? 128 + int(signal_received) : 0;  // (a signal after the last combination cut nothing)
   }
   std::cout << std::setprecision(10);
   std::cout << "scene " << scene_file << ": reduced system of " << r.variables.size() << " variables, " << r.equations << " equations; "
@@ -644,7 +644,7 @@ int solve(const RI::Scene& scene, const RI::Rigid_body_collection<Traits>& input
             << (st.placements_excluded ? ", " + std::to_string(st.placements_excluded) + " combinations of placements excluded (shared points at distances that differ)" : std::string())
             << "; seconds: analysis " << analysis_seconds << ", reduce "
             << st.reduce_seconds << ", solve " << st.solve_seconds << ", verify " << st.verify_seconds << "\n";
-  return signal_received ? 128 + int(signal_received) : 0;
+  return signal_received && !r.complete() ? 128 + int(signal_received) : 0;  // (a signal after the last combination cut nothing)
 }
 
 } // namespace solve_command

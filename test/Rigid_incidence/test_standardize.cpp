@@ -822,7 +822,7 @@ static void random_scenes(Rng& g, int wanted, int epick_every)
 // becomes a point of that body where the distances put it, and the collection says why every
 // configuration is singular. Oracle: W placed here by hand on the line of A = (0,0,0) and
 // V = (4,0,0), between them, beyond V and before A (W also on a bar to another body, as a
-// rail point is). Spheres that do not touch attach nothing.
+// rail point is). Spheres that do not touch attach nothing, nor does a kernel of doubles.
 template <class Traits> static void rail_points(const std::string& kernel)
 {
   struct Case { const char* aw; const char* vw; double x; bool attached; };
@@ -842,8 +842,10 @@ template <class Traits> static void rail_points(const std::string& kernel)
       CHECK(false, name << ": refused: " << e.what());
       continue;
     }
-    CHECK(c.singular_notes().size() == (k.attached ? 1u : 0u), name << ": " << c.singular_notes().size() << " singular note(s)");
-    if (!k.attached || c.singular_notes().empty()) continue;
+    // (with doubles the touching is not decided exactly: nothing is attached)
+    const bool attached = k.attached && Traits::has_exact_ft;
+    CHECK(c.singular_notes().size() == (attached ? 1u : 0u), name << ": " << c.singular_notes().size() << " singular note(s)");
+    if (!attached || c.singular_notes().empty()) continue;
     CHECK(c.singular_notes()[0].find("'W'") != std::string::npos, name << ": the note does not name W: " << c.singular_notes()[0]);
     const std::size_t W = c.point_index("W"), A = c.point_index("A");
     bool found = false;

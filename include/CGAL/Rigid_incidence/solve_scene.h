@@ -23,6 +23,7 @@
 #include <atomic>
 #include <chrono>
 #include <functional>
+#include <iomanip>
 #include <cmath>
 #include <array>
 #include <optional>
@@ -313,6 +314,15 @@ double coefficient_width(const Polynomial_system<NT>& s)
     if (big > 0) w = (std::max)(w, wide / big);
   }
   return w;
+}
+
+// Seconds as a person reads them: 2 significant digits below 10 s, whole seconds above.
+inline std::string seconds_text(double x)
+{
+  std::ostringstream os;
+  if (x < 10) os << std::setprecision(2) << x;
+  else os << std::fixed << std::setprecision(0) << x;
+  return os.str();
 }
 
 inline std::string short_number(double x)
@@ -1180,11 +1190,20 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
       report();
     } while (internal::next_combination(charts, radix_c));
   } while (!stopped && internal::next_combination(placements, radix_p));
+  // a stop the solver met inside the last combination (its rest left pending for it) is a
+  // stop of the whole solve too
+  if (!stopped)
+    if (const char* why = stop_reason())
+      for (const auto& u : out.unresolved)
+        if (u.kind == Box_class::PENDING && (u.reason.find("interrupted") != std::string::npos || u.reason.find("time budget") != std::string::npos)) {
+          stopped = why;
+          break;
+        }
   if (stopped) {
     std::ostringstream why;
     why << (std::string(stopped) == "interrupted" ? std::string("interrupted")
-                                                  : "time limit of " + short_number(seconds_before + parameters.maximal_seconds) + " s reached")
-        << " after " << short_number(seconds_before + since(started)) << " s: " << done << " of ";
+                                                  : "time limit of " + seconds_text(seconds_before + parameters.maximal_seconds) + " s reached")
+        << " after " << seconds_text(seconds_before + since(started)) << " s: " << done << " of ";
     if (total) why << total; else why << "more than 2^62";
     why << " combinations of charts and placements solved (a solve it cut short left its rest pending), the others not solved";
     out.limits.push_back(why.str());
@@ -1264,7 +1283,7 @@ Scene_solve_result solve_scene_with_precision(const Rigid_body_collection<Traits
       // cut short, leaves the answer before it (not complete), and says so
       const bool interrupted = parameters.interrupt && parameters.interrupt->load(std::memory_order_relaxed);
       if (interrupted || (parameters.maximal_seconds > 0 && elapsed >= parameters.maximal_seconds)) {
-        r.limits.push_back(std::string(interrupted ? "interrupted" : "time limit of " + short_number(parameters.maximal_seconds) + " s reached") +
+        r.limits.push_back(std::string(interrupted ? "interrupted" : "time limit of " + seconds_text(parameters.maximal_seconds) + " s reached") +
                            " before the retry with coefficients at " + std::to_string(bits) + " bits");
         break;
       }

@@ -206,6 +206,9 @@ private:
   // scene's other equations hold W (solve_scene() measures the Jacobian).
   bool attach_points_on_lines()
   {
+    // (only with an exact kernel: a tolerance would pin a point that spheres cutting a small
+    // circle leave free, or that spheres just missing each other leave nowhere)
+    if (!Traits::has_exact_ft) return false;
     auto& ds = c_.mutable_distances();
     auto& bodies = c_.mutable_bodies();
     for (std::size_t i = 0; i < ds.size(); ++i)
