@@ -25,6 +25,7 @@
 #include "planted_scene.h"
 
 #include <algorithm>
+#include <fstream>
 #include <limits>
 #include <cmath>
 #include <cstdlib>
@@ -866,6 +867,68 @@ template <class Traits> static void rail_points(const std::string& kernel)
   }
 }
 
+// A rail point's third distance, to a point of the body it joins: a scene of its own when it
+// agrees (W = (1, 0, 0), C = (0, 3, 0): |WC|^2 = 10, Pythagoras), no real configuration when
+// it does not (exit 0 for the tool, not a malformed file): the scene's own distances
+// disagree, decided exactly.
+static void rail_point_contradiction()
+{
+  for (const char* wc : {"10", "11"}) {
+    const std::string name = std::string("rail point with |WC|^2 = ") + wc;
+    std::istringstream in(std::string(R"({"format": "rigid-incidence-scene/1", "bodies": [
+      {"name": "B", "points": {"A": [0, 0, 0], "V": [4, 0, 0], "C": [0, 3, 0]}},
+      {"name": "E", "points": {"G": [0, 0, 0], "H": [2, 0, 0], "K": [0, 1, 0]}},
+      {"name": "bar", "points": {"W": [0, 0, 0], "G": [0, 0, 5]}}],
+      "distances": [{"between": ["W", "A"], "squared": "1"}, {"between": ["W", "V"], "squared": "9"},
+                    {"between": ["W", "C"], "squared": ")") + wc + R"("}]})");
+    const auto scene = RI::read_scene(in, name);
+    const bool agrees = std::string(wc) == "10";
+    try {
+      auto c = RI::standardize(RI::make_collection<Exact>(scene));
+      CHECK(agrees, name << ": accepted");
+      for (const auto& d : c.distances())
+        CHECK(c.label(d.a) == "G" || c.label(d.b) == "G", name << ": distance left: " << d.name);
+    } catch (const RI::No_real_configuration& e) {
+      CHECK(!agrees, name << ": no real configuration: " << e.what());
+      CHECK(std::string(e.what()).find("distances[2]") != std::string::npos && std::string(e.what()).find("'W'") != std::string::npos,
+            name << ": the reason names neither the distance nor W: " << e.what());
+    } catch (const RI::Input_error& e) {
+      CHECK(false, name << ": refused as malformed: " << e.what());
+    }
+  }
+}
+
+// A distance between two points of a merged body that does not know it exactly becomes one
+// of the body's distances (a check on its placements), not an equation left to count against
+// a rigid body: rail_point_by_distances.json, W attached to F before the merges, its
+// distances to Y1, Y2, Z1, Z2 inside the bodies that take those in later.
+static void distances_as_checks()
+{
+  const std::string file = std::string(RIGID_INCIDENCE_DATA_DIR) + "/rail_point_by_distances.json";
+  std::ifstream in(file);
+  const auto scene = RI::read_scene(in, file);
+  auto c = RI::standardize(RI::make_collection<Exact>(scene));
+  CHECK(c.distances().empty(), "rail_point_by_distances: " << c.distances().size() << " distance(s) left as equations");
+  std::size_t checks_found = 0;
+  for (const auto& d : scene.distances) {
+    const std::size_t a = c.point_index(d.a), b = c.point_index(d.b);
+    const std::string who = d.a + "-" + d.b;
+    // the file's value, as the oracle
+    const Exact::FT value = d.squared;
+    bool held = false;
+    for (const auto& body : c.bodies()) {
+      if (!body.contains(a) || !body.contains(b)) continue;
+      auto known = body.squared(body.local(a), body.local(b));
+      if (!known) continue;
+      CHECK(*known == value, "rail_point_by_distances: body '" << body.name << "' holds " << who << " at " << *known << ", not " << value);
+      held = true;
+      if (!body.has_coordinates[body.local(a)] || !body.has_coordinates[body.local(b)]) ++checks_found;
+    }
+    CHECK(held, "rail_point_by_distances: no body holds " << who);
+  }
+  CHECK(checks_found >= 4, "rail_point_by_distances: " << checks_found << " distances held as a body's distances, expected W's four");
+}
+
 int main()
 {
   CGAL::Real_timer timer;
@@ -883,6 +946,8 @@ int main()
   double_kernel_tolerance(g);
   rail_points<Exact>("exact");
   rail_points<Epick>("epick");
+  rail_point_contradiction();
+  distances_as_checks();
   std::cout << "fixed cases done in " << timer.time() << " s\n";
   random_scenes(g, 120, 3);
   std::cout << (failures ? "FAILED" : "OK") << ": " << checks << " checks, " << failures << " failures, " << timer.time()

@@ -424,6 +424,15 @@ private:
             if (!used[j] && holds(j, p) && holds(j, q)) { refs.push_back(q); from_part[q] = j; break; }
         }
         if (refs.size() < 3) continue;
+        // reference triples, but none whose own distances put it on a line exactly (a point
+        // on the line of two others: it would leave p's place undecided, where waiting for
+        // another reference places it)
+        std::vector<std::array<std::size_t, 3>> triples;
+        for (std::size_t a = 0; a < refs.size() && triples.size() < 20; ++a)
+          for (std::size_t b = a + 1; b < refs.size() && triples.size() < 20; ++b)
+            for (std::size_t c = b + 1; c < refs.size() && triples.size() < 20; ++c)
+              if (!on_a_line(refs[a], refs[b], refs[c])) triples.push_back({refs[a], refs[b], refs[c]});
+        if (triples.empty()) continue;
         if (steps) {
           Placement_step s;
           s.kind = Placement_step_kind::INTERVAL;
@@ -433,10 +442,7 @@ private:
             if (from_part[q] != none &&
                 std::find(s.distance_parts.begin(), s.distance_parts.end(), from_part[q]) == s.distance_parts.end())
               s.distance_parts.push_back(from_part[q]);
-          for (std::size_t a = 0; a < refs.size() && s.references.size() < 20; ++a)
-            for (std::size_t b = a + 1; b < refs.size() && s.references.size() < 20; ++b)
-              for (std::size_t c = b + 1; c < refs.size() && s.references.size() < 20; ++c)
-                s.references.push_back({refs[a], refs[b], refs[c]});
+          s.references = triples;
           steps->push_back(s);
         }
         placed[p] = progress = true;
@@ -444,6 +450,13 @@ private:
       if (!progress) break;
     }
     return std::all_of(placed.begin(), placed.end(), [](bool x) { return x; });
+  }
+
+  // Do the known distances of i, j, k put them on a line (decided exactly)?
+  bool on_a_line(std::size_t i, std::size_t j, std::size_t k) const
+  {
+    const auto& K = plan_.known;
+    return K[i][j] && K[i][k] && K[j][k] && triangle_sign<Traits::has_exact_ft>(*K[i][j], *K[i][k], *K[j][k]) == CGAL::ZERO;
   }
 
   bool holds(std::size_t part, std::size_t p) const

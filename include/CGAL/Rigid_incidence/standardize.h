@@ -84,13 +84,16 @@ public:
       changed = absorb_distances();
       changed = absorb_bodies() || changed;
       if (changed) continue;
+      // before the merges and implied bodies: a point held by two touching spheres becomes
+      // a point of the body with the line, exactly, and its other distances then lie in
+      // that body, or in the bodies that take it in later (checks on their placements);
+      // left to implied bodies it would make their placements double ones, which only a
+      // tower of square roots decides
+      changed = attach_points_on_lines();
+      if (changed) continue;
       changed = merge_one_pair();
       if (changed) continue;
       changed = add_implied_bodies();
-      if (changed) continue;
-      // last: a point the steps above left held by two touching spheres (where implied
-      // bodies took it in, with its other distances, their placements place it)
-      changed = attach_points_on_lines();
     }
     check_shared_pairs();
     // The frame passes to the body that absorbed or merged the frame body; that body keeps
@@ -109,6 +112,7 @@ private:
   std::string frame_name_; // the user body whose local frame results are reported in
   bool frame_explicit_;
   std::string frame_holder_; // the body whose coordinates are those of the frame body
+  std::set<std::size_t> attached_; // points attach_points_on_lines() put into a body
   std::size_t implied_count_ = 0, merged_count_ = 0;
   std::set<std::vector<std::size_t>> collinear_noted_;  // cliques on one line, noted once
   std::set<std::pair<std::size_t, std::string>> axis_noted_;  // points left out of implied bodies, noted once
@@ -179,14 +183,44 @@ private:
         if (bodies[i].contains(d.a) && bodies[i].contains(d.b)) {
           auto known = body_squared(bodies[i], d.a, d.b);
           if (known) {
-            if (!c_.same_value(*known, d.squared))
-              throw Input_error(d.name + ": disagrees with body '" + bodies[i].name +
-                                "', which fixes the distance of '" + c_.label(d.a) + "' and '" + c_.label(d.b) +
-                                "' to squared " + to_text(*known) + ", not " + to_text(d.squared));
+            if (!c_.same_value(*known, d.squared)) {
+              const std::string why = d.name + ": disagrees with body '" + bodies[i].name + "', which fixes the distance of '" +
+                                      c_.label(d.a) + "' and '" + c_.label(d.b) + "' to squared " + to_text(*known) + ", not " +
+                                      to_text(d.squared);
+              // a point the body took in from two touching spheres: the scene's own distances
+              // disagree (decided exactly), not a number written twice
+              for (std::size_t q : {d.a, d.b})
+                if (attached_.count(q))
+                  throw No_real_configuration(why + " ('" + c_.label(q) + "' is there because two of its distances' spheres touch"
+                                              " on a line of that body): no real configuration");
+              throw Input_error(why);
+            }
             if (host == Collection::npos) host = i;
           }
         }
-      if (host == Collection::npos) { ++k; continue; }
+      if (host == Collection::npos) {
+        // inside bodies that do not know it (two points placed through different distances of
+        // a merged body): it holds in every configuration, so it is one of their distances,
+        // which their placements must meet (enumerate_placements() checks it, or places by
+        // it), not an equation of the reduced system: there it would count twice, against a
+        // body that is rigid already (a point's distances to a body it was attached to, to
+        // points that the body took in later)
+        std::vector<std::size_t> inside;
+        for (std::size_t i = 0; i < bodies.size(); ++i)
+          if (bodies[i].contains(d.a) && bodies[i].contains(d.b)) inside.push_back(i);
+        if (inside.empty()) { ++k; continue; }
+        for (std::size_t i : inside) {
+          Body& b = bodies[i];
+          b.squared_distances.push_back({b.local(d.a), b.local(d.b), d.squared});
+          b.mirror_variants = 0;  // (placements enumerated, each checked against it)
+          note(d.name + " lies inside body '" + b.name + "', which does not know it exactly: it becomes one of its"
+                        " distances, a check on its placements");
+          add_source(b, d.name);
+        }
+        ds.erase(ds.begin() + k);
+        changed = true;
+        continue;
+      }
       note(d.name + " lies inside body '" + bodies[host].name + "' and is absorbed");
       add_source(bodies[host], d.name);
       ds.erase(ds.begin() + k);
@@ -241,6 +275,7 @@ private:
           note(why + ": it becomes a point of that body, at " + c_.label(A) + " + " + to_text(t) + " (" + c_.label(V) + " - " +
                c_.label(A) + "); a configuration is singular unless the scene's other equations hold it");
           c_.add_singular_note(why);
+          attached_.insert(W);
           return true;  // (absorb_distances() takes the two distances into the body, checked)
         }
       }

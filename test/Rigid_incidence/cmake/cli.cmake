@@ -312,6 +312,7 @@ if(TARGET rigid_incidence)
     flat_hinges "--solutions|1|--certified|1|--singular|1|--complete|true"
     rail_point_by_distances "--solutions|32|--certified|32|--singular|0|--complete|true"
     rail_point_on_body_line "--solutions|32|--certified|32|--singular|32|--complete|true"
+    rail_points_on_two_bodies "--solutions|2|--certified|2|--singular|2|--complete|true"
     flat_implied_body "--solutions|4|--certified|4|--singular|4|--complete|true"
     tetra_ineq "--solutions|2|--certified|2|--complete|true"
     tetra_i "--solutions|2|--certified|2|--complete|true|--distinct|1e-17|--coefficient-precision-at-least|128"
