@@ -496,6 +496,7 @@ int solve(const RI::Scene& scene, const RI::Rigid_body_collection<Traits>& input
       sj["parameters"] = params;
       sj["charts"] = x.charts;
       sj["found_in_charts"] = x.found;
+      sj["coefficient_precision"] = x.coefficient_precision;
       nlohmann::ordered_json bodies = nlohmann::ordered_json::object();
       for (const auto& b : user_poses(scene, x.configuration)) {
         const auto& m = b.second.motion;
@@ -595,7 +596,9 @@ int solve(const RI::Scene& scene, const RI::Rigid_body_collection<Traits>& input
   for (const auto& x : r.configurations) {
     std::cout << "\nconfiguration " << ++k << ": " << (x.certified ? "certified" : "NOT certified")
               << (x.on_inequality_boundary ? " (on an inequality's boundary)" : "")
-              << (x.singular ? ", SINGULAR (a double configuration: " + x.singular_reason + ")" : "") << ", max residual "
+              << (x.singular ? ", SINGULAR (a double configuration: " + x.singular_reason + ")" : "")
+              << (x.coefficient_precision != 53 ? ", coefficients at " + (x.coefficient_precision ? std::to_string(x.coefficient_precision) + " bits" : std::string("exact")) : std::string())
+              << ", max residual "
               << std::setprecision(3) << x.max_residual << " (relative to the scene's size " << x.max_relative_residual << ")"
               << std::setprecision(10) << " in the original system\n  parameters:";
     for (std::size_t i = 0; i < x.variables.size(); ++i)

@@ -83,6 +83,13 @@ int main(int argc, char** argv)
       CHECK(sol.contains(k), "solution " << s << ": missing key " << k);
     if (sol.value("certified", false)) ++certified;
     if (sol.value("singular", false)) ++singular;
+    // the precision that found it: the answer's, or a lower one kept from an earlier pass (a
+    // retry solves again only the combinations that left something uncertain)
+    if (sol.contains("coefficient_precision") && j.contains("coefficient_precision")) {
+      const long own = sol["coefficient_precision"].get<long>(), top = j["coefficient_precision"].get<long>();
+      CHECK(own == top || (!j["precision_history"].empty() && own >= 53 && own < top),
+            "solution " << s << ": coefficient_precision " << own << " beside the answer's " << top);
+    }
     std::map<std::string, P3> pts;
     for (auto it = sol["points"].begin(); it != sol["points"].end(); ++it)
       pts[it.key()] = {it.value()[0].get<double>(), it.value()[1].get<double>(), it.value()[2].get<double>()};

@@ -40,6 +40,7 @@
 #include <iostream>
 #include <limits>
 #include <map>
+#include <set>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -995,6 +996,63 @@ static int write_scenes(const std::string& dir)
   return 0;
 }
 
+// 7. A precision retry solves again only the combinations of charts and placements that left
+// something uncertain and keeps the others' answer (issue 27, item 2). The mechanism on its
+// own: a complete double-interval answer, then a retry at 128 bits of the combination of its
+// first configuration only; the merged answer must be the original one (every configuration,
+// none twice), the retried configurations at 128 bits, the others at 53, one system more.
+static void case_partial_retry()
+{
+  print_case("7. a precision retry of one combination of charts and placements, the others kept");
+#ifdef CGAL_USE_MPFI
+  for (const char* name : {"tetra", "pent", "quad_distinct"}) {
+    const Run& o = originals[name];
+    RI::Rigid_body_collection<Traits> input = RI::make_collection<Traits>(o.scene);
+    RI::Rigid_body_collection<Traits> c = RI::standardize(input);
+    RI::Incidence_tree t = RI::optimal_incidence_tree(c);
+    RI::Well_formed_selection wf = RI::select_well_formed_incidences(c, t);
+    RI::Scene_solve_parameters p;
+    p.solver.maximal_boxes = default_boxes;
+    std::set<RI::internal::Scene_combination> uncertain;
+    RI::Scene_solve_result first;
+    {
+      RI::internal::Solver_precision_guard<CGAL::Interval_nt<false>> guard(53);
+      first = RI::internal::solve_scene_unscaled<CGAL::Interval_nt<false>, CGAL::Interval_nt<false>>(input, c, t, wf, p, 0, nullptr, &uncertain);
+    }
+    CHECK(first.complete() && uncertain.empty() && !first.configurations.empty(),
+          name << ": the double-interval answer is not complete (" << first.configurations.size() << " configurations, "
+               << uncertain.size() << " uncertain combinations)");
+    if (first.configurations.empty()) continue;
+    RI::internal::Scene_retry retry;
+    retry.earlier = &first;
+    retry.only.insert(RI::internal::Scene_combination(first.configurations[0].placements, first.configurations[0].charts));
+    p.solver.precision = 128;
+    Run a;
+    a.name = std::string(name) + " (one combination again at 128 bits)";
+    a.scene = o.scene;
+    {
+      RI::internal::Solver_precision_guard<CGAL::Gmpfi> guard(128);
+      a.r = RI::internal::solve_scene_unscaled<CGAL::Gmpfi, CGAL::Gmpfi>(input, c, t, wf, p, 0, &retry, nullptr);
+    }
+    print_run(a);
+    check_correspond(o, a, [](const P3& x) { return x; }, 1.0, true);
+    std::size_t at128 = 0, at53 = 0;
+    for (const auto& x : a.r.configurations) {
+      if (x.coefficient_precision == 128) ++at128;
+      if (x.coefficient_precision == 53) ++at53;
+      const bool retried = retry.only.count(RI::internal::Scene_combination(x.placements, x.charts)) > 0;
+      CHECK(x.coefficient_precision == (retried ? 128u : 53u),
+            a.name << ": a configuration of a " << (retried ? "retried" : "kept") << " combination at " << x.coefficient_precision << " bits");
+    }
+    CHECK(at128 >= 1 && at128 + at53 == a.r.configurations.size(), a.name << ": " << at128 << " at 128 bits, " << at53 << " at 53");
+    CHECK(a.r.statistics.chart_combinations == first.statistics.chart_combinations + 1,
+          a.name << ": " << a.r.statistics.chart_combinations << " systems solved in all, expected " << first.statistics.chart_combinations << " + 1");
+  }
+#else
+  std::cout << "  (no MPFI: skipped)\n";
+#endif
+}
+
 int main(int argc, char** argv)
 {
   if (argc == 3 && std::string(argv[1]) == "--write-scenes") return write_scenes(argv[2]);
@@ -1007,6 +1065,7 @@ int main(int argc, char** argv)
   case_collinear();
   case_tangent();
   case_border();
+  case_partial_retry();
   std::cout << "\n" << checks << " checks, " << failures << " failure(s), " << seconds_since(t0) << " s"
             << (known_failures ? " (with the known failures)" : "") << "\n";
   return failures ? 1 : 0;

@@ -28,6 +28,7 @@
 #include <array>
 #include <optional>
 #include <sstream>
+#include <set>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -129,6 +130,10 @@ struct Scene_configuration
   /// into two or none
   bool singular = false;
   std::string singular_reason;                        ///< where, when `singular`
+  /// bits of the reduced system's coefficients in the solve that gave it: 53 for double
+  /// intervals, the MPFR precision of a retry (see
+  /// `Scene_solve_parameters::maximal_coefficient_precision`), 0 for exact rationals
+  unsigned coefficient_precision = 53;
 };
 
 /// \ingroup PkgRigidIncidenceSolver
@@ -671,11 +676,39 @@ inline std::vector<Scene_curve> join_pieces(std::vector<Scene_piece>& pieces, do
 
 namespace internal {
 
-// solve_scene() at the scene's own scale
+// A combination of placements (per body) and charts (per tree edge): one reduced system.
+typedef std::pair<std::vector<int>, std::vector<int>> Scene_combination;
+
+// A pass that solves again only some combinations, at a higher precision, and keeps an
+// earlier pass's answer for the others.
+struct Scene_retry
+{
+  const Scene_solve_result* earlier = nullptr;
+  std::set<Scene_combination> only;
+};
+
+// the stable order of configurations: by the coordinates of the points, in label order
+inline bool configuration_order(const Scene_configuration& a, const Scene_configuration& b)
+{
+  const auto& p = a.configuration.points;
+  const auto& q = b.configuration.points;
+  for (std::size_t i = 0; i < p.size() && i < q.size(); ++i)
+    for (int k = 0; k < 3; ++k) {
+      double x = std::round(p[i][k] * 1e6), y = std::round(q[i][k] * 1e6);
+      if (x != y) return x < y;
+    }
+  return false;
+}
+
+// solve_scene() at the scene's own scale. With `retry`, only its combinations are solved; the
+// earlier pass's configurations and regions of the others are kept. `uncertain`, if given,
+// receives the combinations whose solve left a root not certified or a region unknown (what a
+// retry at a higher precision solves again).
 template <class IT, class NT, class Traits>
 Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& original, const Rigid_body_collection<Traits>& c,
                                const Incidence_tree& tree, const Well_formed_selection& selection,
-                               const Scene_solve_parameters& parameters, double seconds_before = 0)
+                               const Scene_solve_parameters& parameters, double seconds_before = 0,
+                               const Scene_retry* retry = nullptr, std::set<Scene_combination>* uncertain = nullptr)
 {
   typedef std::chrono::steady_clock Clock;
   auto since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
@@ -883,6 +916,36 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
   for (int x : radix_c) per_placement = per_placement > (std::size_t(1) << 62) / std::size_t(x) ? 0 : per_placement * std::size_t(x);
   total = per_placement;
   for (int x : radix_p) total = total == 0 || total > (std::size_t(1) << 62) / std::size_t(x) ? 0 : total * std::size_t(x);
+  // a retry: the earlier answer of the combinations it does not solve again (theirs had every
+  // root certified and no unknown region; a configuration's combination is its placements
+  // with those of the bodies outside the covering set, enumerated per root, at 0)
+  auto combination_of = [&](const std::vector<int>& pl, const std::vector<int>& ch) {
+    std::vector<int> p = pl;
+    for (std::size_t b : nc_bodies) if (b < p.size()) p[b] = 0;
+    return Scene_combination(p, ch);
+  };
+  if (retry) {
+    total = retry->only.size();
+    if (retry->earlier) {
+      for (const auto& x : retry->earlier->configurations)
+        if (!retry->only.count(combination_of(x.placements, x.charts)))
+          found.push_back({x, internal::configuration_size(x.configuration)});
+      for (const auto& u : retry->earlier->unresolved)
+        if (!retry->only.count(Scene_combination(u.placements, u.charts))) out.unresolved.push_back(u);
+      const double width = st.coefficient_width;
+      const auto& e = retry->earlier->statistics;
+      st.chart_combinations += e.chart_combinations;
+      st.boxes += e.boxes;
+      st.krawczyk_tests += e.krawczyk_tests;
+      st.roots += e.roots;
+      st.duplicates += e.duplicates;
+      st.spurious += e.spurious;
+      st.solve_seconds += e.solve_seconds;
+      st.reduce_seconds += e.reduce_seconds;
+      st.verify_seconds += e.verify_seconds;
+      st.coefficient_width = width;  // (of the systems solved again)
+    }
+  }
   std::size_t done = 0;
   const char* stopped = nullptr;
   auto report = [&]() {
@@ -897,9 +960,13 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
     parameters.progress(g);
   };
   do {
-    if (!placements_fit(placements)) { ++st.placements_excluded; done += per_placement; continue; }
+    if (!placements_fit(placements)) {
+      if (!retry) { ++st.placements_excluded; done += per_placement; }
+      continue;
+    }
     std::vector<int> charts(radix_c.size(), 0);
     do {
+      if (retry && !retry->only.count(Scene_combination(placements, charts))) continue;
       if ((stopped = stop_reason())) break;
       auto t1 = Clock::now();
       Reduced_system<Traits, NT> r(c, tree, selection, charts, Rotation_form::QUATERNION_CHARTS, placements);
@@ -1087,6 +1154,7 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
         ++st.roots;
         Scene_configuration s;
         s.certified = root.certified;
+        s.coefficient_precision = out.coefficient_precision;
         if (from_region[ri]) {
           s.singular = true;
           s.singular_reason = "a possible multiple root of the reduced system (" + from_region[ri]->reason + ", " +
@@ -1215,17 +1283,13 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
   std::sort(out.curves.begin(), out.curves.end(), [](const Scene_curve& a, const Scene_curve& b) {
     return a.configurations.front().points < b.configurations.front().points;
   });
-  // a stable order: by the coordinates of the points, in label order
-  std::sort(out.configurations.begin(), out.configurations.end(), [](const Scene_configuration& a, const Scene_configuration& b) {
-    const auto& p = a.configuration.points;
-    const auto& q = b.configuration.points;
-    for (std::size_t i = 0; i < p.size() && i < q.size(); ++i)
-      for (int k = 0; k < 3; ++k) {
-        double x = std::round(p[i][k] * 1e6), y = std::round(q[i][k] * 1e6);
-        if (x != y) return x < y;
-      }
-    return false;
-  });
+  std::sort(out.configurations.begin(), out.configurations.end(), configuration_order);
+  if (uncertain) {
+    for (const auto& u : out.unresolved)
+      if (u.kind == Box_class::UNKNOWN) uncertain->insert(Scene_combination(u.placements, u.charts));
+    for (const auto& x : out.configurations)
+      if (!x.certified) uncertain->insert(combination_of(x.placements, x.charts));
+  }
   return out;
 }
 
@@ -1260,7 +1324,10 @@ inline std::string precision_note(const Scene_solve_result& r, double seconds)
   return s + o.str();
 }
 
-// solve_scene_unscaled(), then again with more bits while precision may be the cause.
+// solve_scene_unscaled(), then again with more bits while precision may be the cause: only
+// the combinations of charts and placements whose solve left something uncertain, when the
+// answer is a list of configurations (a curve, or a positive-dimensional diagnosis, is
+// solved again whole: its pieces are joined across combinations).
 template <class IT, class NT, class Traits>
 Scene_solve_result solve_scene_with_precision(const Rigid_body_collection<Traits>& original, const Rigid_body_collection<Traits>& c,
                                               const Incidence_tree& tree, const Well_formed_selection& selection,
@@ -1268,7 +1335,8 @@ Scene_solve_result solve_scene_with_precision(const Rigid_body_collection<Traits
 {
   auto t0 = std::chrono::steady_clock::now();
   const auto begun = t0;
-  Scene_solve_result r = solve_scene_unscaled<IT, NT>(original, c, tree, selection, parameters);
+  std::set<Scene_combination> uncertain;
+  Scene_solve_result r = solve_scene_unscaled<IT, NT>(original, c, tree, selection, parameters, 0, nullptr, &uncertain);
   if constexpr (std::is_same<NT, CGAL::Gmpq>::value) {
     return r;  // exact coefficients (the solver raises its own precision)
   } else {
@@ -1287,24 +1355,35 @@ Scene_solve_result solve_scene_with_precision(const Rigid_body_collection<Traits
                            " before the retry with coefficients at " + std::to_string(bits) + " bits");
         break;
       }
+      // only the uncertain combinations, unless curves are joined across them
+      const bool whole = !r.curves.empty() || !r.diagnosis.empty() || uncertain.empty();
+      Scene_retry retry;
+      retry.earlier = &r;
+      retry.only = uncertain;
       std::vector<std::string> history = r.precision_history;
-      history.push_back(precision_note(r, seconds));
+      history.push_back(precision_note(r, seconds) +
+                        (whole ? std::string() : "; " + std::to_string(uncertain.size()) + " combination(s) of charts and placements"
+                                                     " left something uncertain and were solved again at " + std::to_string(bits) +
+                                                     " bits, the others kept"));
       t0 = std::chrono::steady_clock::now();
       Scene_solve_parameters p = parameters;
       p.solver.precision = bits;
       if (parameters.maximal_seconds > 0) p.maximal_seconds = parameters.maximal_seconds - elapsed;
       Solver_precision_guard<CGAL::Gmpfi> guard(bits);
-      Scene_solve_result retry = solve_scene_unscaled<CGAL::Gmpfi, CGAL::Gmpfi>(original, c, tree, selection, p, elapsed);
-      const bool cut = std::any_of(retry.limits.begin(), retry.limits.end(), [](const std::string& l) {
+      std::set<Scene_combination> still;
+      Scene_solve_result again =
+          solve_scene_unscaled<CGAL::Gmpfi, CGAL::Gmpfi>(original, c, tree, selection, p, elapsed, whole ? nullptr : &retry, &still);
+      const bool cut = std::any_of(again.limits.begin(), again.limits.end(), [](const std::string& l) {
         return l.rfind("interrupted", 0) == 0 || l.rfind("time limit of", 0) == 0;
       });
       if (cut) {
-        r.limits.push_back("the retry with coefficients at " + std::to_string(bits) + " bits was cut short (" + retry.limits.back() +
+        r.limits.push_back("the retry with coefficients at " + std::to_string(bits) + " bits was cut short (" + again.limits.back() +
                            "); this is the answer at " + std::to_string(r.coefficient_precision) + " bits");
         break;
       }
-      r = std::move(retry);
+      r = std::move(again);
       r.precision_history = std::move(history);
+      uncertain = std::move(still);
     }
     if (!r.precision_history.empty() && r.diagnosis.rfind("positive_dimensional", 0) == 0)
       r.diagnosis += "; the same with coefficients at " + std::to_string(r.coefficient_precision) +
