@@ -20,6 +20,7 @@
 #include <CGAL/Interval_traits.h>
 
 #include <algorithm>
+#include <chrono>
 #include <array>
 #include <cmath>
 #include <deque>
@@ -620,12 +621,19 @@ class Placement_enumerator
 public:
   Placement_enumerator(const Placement_plan& plan, std::size_t max_placements) : plan_(plan), max_(max_placements) {}
 
+  /// Stop at `t` (exact arithmetic only: a sign that is 0 costs a root bound, which can take
+  /// minutes in a deep tower): `stopped()` then says so, and the list is not to be used.
+  void set_deadline(std::chrono::steady_clock::time_point t) { deadline_ = t; }
+  bool stopped() const { return stopped_; }
+
   std::vector<Body_enclosure<W>> run()
   {
     const Placement_plan& Pl = plan_;
     for (std::size_t j = 0; j < Pl.parts.size(); ++j) {
       Placement_enumerator<W> e(Pl.parts[j], max_);
+      e.set_deadline(deadline_);
       part_placements_.push_back(e.run());
+      if (e.stopped()) { stopped_ = true; return out_; }
       part_frames_.push_back(e.frames());
       if (e.truncated()) part_truncated_ = true;  // the body is incomplete, but its list goes on
       if (!e.undecided().empty()) note_undecided(false, "its part '" + Pl.parts[j].name + "': " + e.undecided(), false);
@@ -770,6 +778,8 @@ private:
   const Placement_plan& plan_;
   std::size_t max_;
   bool truncated_ = false, part_truncated_ = false;
+  std::chrono::steady_clock::time_point deadline_ = std::chrono::steady_clock::time_point::max();
+  bool stopped_ = false;
   std::string undecided_;
   std::size_t undecided_count_ = 0;
   std::vector<W> a_, b_, t_;
@@ -966,7 +976,9 @@ private:
   // has one side.
   void place(std::size_t k, const std::string& singular, bool undecided)
   {
-    if (truncated_) return;
+    if (truncated_ || stopped_) return;
+    if constexpr (exact_)
+      if (std::chrono::steady_clock::now() > deadline_) { stopped_ = true; return; }
     const auto& steps = plan_.steps;
     if (k == steps.size()) { emit(singular, undecided); return; }
     const Placement_step& s = steps[k];
@@ -1368,6 +1380,14 @@ constexpr unsigned exact_decision_precision = 256;
 constexpr std::size_t maximal_exact_square_roots = 6;
 
 /// \ingroup PkgRigidIncidenceRef
+/// The longest the exact decisions of one body's placements may take, in seconds: the cost of
+/// an exact sign that is 0 grows with the size of the rationals as well as with the tower (a
+/// body of 6 square roots over 100-digit rationals ran for over 20 minutes). Past it the
+/// choices stay undecided, as above, and the answer is not complete. (Wall-clock time: on a
+/// slower machine fewer bodies are decided.)
+constexpr double maximal_exact_seconds = 10;
+
+/// \ingroup PkgRigidIncidenceRef
 /// The default limit on the placements of one body (2^14): a body with more is enumerated
 /// up to it and reported incomplete.
 constexpr std::size_t default_maximal_placements = std::size_t(1) << 14;
@@ -1440,13 +1460,22 @@ std::shared_ptr<const Placement_enumeration<IT>> cached_placements(const Rigid_b
       // CORE computes in the FPU's default rounding, whatever the caller's
       CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
       Placement_enumerator<CORE::Expr> e(plan, max_placements);
+      e.set_deadline(std::chrono::steady_clock::now() +
+                     std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(maximal_exact_seconds)));
       auto all = e.run();
-      out->complete = !e.truncated();
-      out->undecided = e.undecided();  // only what exact arithmetic leaves: three points exactly on a line
-      out->placements = convert_exact_enclosures<IT>(all, e.frames());
-      out->relative_width = relative_width(out->placements, plan.scale);
-      out->decided_exactly = true;
-      if (!out->undecided.empty()) out->undecided = "in exact arithmetic, " + out->undecided;
+      if (e.stopped()) {
+        // the answer of the last interval pass stands, undecided, and says why
+        out->undecided += "; not decided exactly either: the exact decisions (a tower of up to " + std::to_string(roots) +
+                          " square roots) were stopped after " + std::to_string(int(maximal_exact_seconds)) +
+                          " s (maximal_exact_seconds)";
+      } else {
+        out->complete = !e.truncated();
+        out->undecided = e.undecided();  // only what exact arithmetic leaves: three points exactly on a line
+        out->placements = convert_exact_enclosures<IT>(all, e.frames());
+        out->relative_width = relative_width(out->placements, plan.scale);
+        out->decided_exactly = true;
+        if (!out->undecided.empty()) out->undecided = "in exact arithmetic, " + out->undecided;
+      }
     }
     // every side of some point certainly excluded by a further distance or an orientation:
     // no real placement either (interval exclusion is rigorous)

@@ -380,6 +380,17 @@ if(TARGET rigid_incidence)
   if(RIGID_INCIDENCE_TIMEOUT)
     set_tests_properties(cli_solve_sigINT cli_solve_sigTERM PROPERTIES TIMEOUT 300)
   endif()
+  # exact decisions that would take over 20 minutes (one CORE sign of a zero in a tower over
+  # long rationals) stop after maximal_exact_seconds: the answer comes, not complete, and says
+  # why; its configurations hold in the scene
+  set(_ri_exact ${CMAKE_CURRENT_LIST_DIR}/../data/exact_decisions_stopped.json)
+  add_test(NAME cli_solve_exact_decisions_stopped
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${_ri_exact}|--json" -DEXPECT_RC=0
+                   "-DEXPECT_STDOUT=were stopped after 10 s \\(maximal_exact_seconds\\)"
+                   "-DSTDOUT_FILE=${CMAKE_CURRENT_BINARY_DIR}/cli_solve_exact_decisions_stopped.json"
+                   "-DCHECK_PROGRAM=$<TARGET_FILE:solve_json_check>" "-DCHECK_ARGS=STDOUT_FILE|${_ri_exact}|--complete|false"
+                   -P ${_ri_cli_script})
+  set_tests_properties(cli_solve_exact_decisions_stopped PROPERTIES TIMEOUT 300)
   add_test(NAME cli_usage_max_seconds_negative
            COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${_ri_d}/tetra.json|--max-seconds|-1" -DEXPECT_RC=1
                    "-DEXPECT_STDERR=--max-seconds: '-1' is not a positive number" -P ${_ri_cli_script})
