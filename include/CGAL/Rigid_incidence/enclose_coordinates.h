@@ -13,6 +13,7 @@
 #include <CGAL/Rigid_incidence/internal/cayley_menger.h>
 #include <CGAL/Rigid_incidence/internal/interval_ops.h>
 #include <CGAL/Rigid_incidence/internal/parse_number.h>
+#include <CGAL/Rigid_incidence/internal/run_in_child.h>
 
 #include <CGAL/CORE_Expr.h>
 #include <CGAL/Gmpq.h>
@@ -1398,6 +1399,97 @@ constexpr unsigned maximal_placement_precision = 4096;
 
 namespace internal {
 
+// The exact pass of cached_placements(): the choices intervals leave open made in CORE::Expr,
+// the placements enclosed in IT.
+template <class IT>
+struct Exact_placements
+{
+  bool done = false;  // false: stopped at the time limit, or failed (then `why` says how)
+  bool cut = false;   // stopped by the solve's interrupt or time limit (not to be cached)
+  std::string why;
+  std::vector<Body_enclosure<IT>> placements;
+  bool truncated = false;
+  std::string undecided;  // what exact arithmetic leaves undecided
+};
+
+template <class IT>
+Exact_placements<IT> exact_placements_here(const Placement_plan& plan, std::size_t max_placements, double seconds)
+{
+  // CORE computes in the FPU's default rounding, whatever the caller's
+  CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
+  Placement_enumerator<CORE::Expr> e(plan, max_placements);
+  e.set_deadline(std::chrono::steady_clock::now() +
+                 std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(seconds)));
+  auto all = e.run();
+  Exact_placements<IT> x;
+  if (e.stopped()) return x;
+  x.done = true;
+  x.truncated = e.truncated();
+  x.undecided = e.undecided();
+  x.placements = convert_exact_enclosures<IT>(all, e.frames());
+  return x;
+}
+
+template <class IT>
+std::string write_exact_placements(const Exact_placements<IT>& x)
+{
+  Answer_writer w;
+  w.integer(x.done); w.integer(x.truncated); w.text(x.undecided);
+  w.integer((long long)x.placements.size());
+  for (const auto& e : x.placements) {
+    w.integer(e.consistent); w.integer(e.variant); w.integer(e.in_given_frame); w.integer(e.singular); w.integer(e.undecided);
+    w.text(e.singular_reason);
+    w.integer((long long)e.coordinates.size());
+    for (const auto& p : e.coordinates) for (const IT& c : p) w.number(c);
+  }
+  return w.str();
+}
+
+template <class IT>
+Exact_placements<IT> read_exact_placements(const std::string& s)
+{
+  Answer_reader r(s);
+  Exact_placements<IT> x;
+  x.done = r.integer() != 0; x.truncated = r.integer() != 0; x.undecided = r.text();
+  const long long n = r.integer();
+  for (long long k = 0; k < n; ++k) {
+    Body_enclosure<IT> e;
+    e.consistent = r.integer() != 0; e.variant = int(r.integer()); e.in_given_frame = r.integer() != 0;
+    e.singular = r.integer() != 0; e.undecided = r.integer() != 0;
+    e.singular_reason = r.text();
+    const long long m = r.integer();
+    for (long long q = 0; q < m; ++q) {
+      std::array<IT, 3> p;
+      for (IT& c : p) r.number(c);
+      e.coordinates.push_back(p);
+    }
+    x.placements.push_back(std::move(e));
+  }
+  if (!r.at_end()) throw std::runtime_error("a broken answer from the process of the exact decisions");
+  return x;
+}
+
+// The exact pass, bounded by `seconds` however long one exact sign takes: run in a child
+// process killed at the limit (CORE checks no clock inside a sign, and a sign that is 0 in a
+// deep tower ran for over 20 minutes); where there is no fork(), here, stopped between steps.
+template <class IT>
+Exact_placements<IT> exact_placements(const Placement_plan& plan, std::size_t max_placements, double seconds)
+{
+  const Child_run c = run_in_child([&] { return write_exact_placements(exact_placements_here<IT>(plan, max_placements, seconds)); },
+                                   seconds);
+  if (c.status == Child_run::NOT_STARTED) return exact_placements_here<IT>(plan, max_placements, seconds);
+  Exact_placements<IT> x;
+  if (c.status == Child_run::DONE) {
+    try { return read_exact_placements<IT>(c.answer); }
+    catch (const std::exception& e) { x.why = std::string("the exact decisions failed: ") + e.what(); }
+  } else if (c.status == Child_run::FAILED) x.why = "the exact decisions failed: " + c.why;
+  else if (c.status == Child_run::STOPPED) {
+    x.cut = true;
+    x.why = "the exact decisions were cut by the solve's interrupt or time limit";
+  }
+  return x;  // TIMED_OUT: not done, no `why` (the caller says the limit)
+}
+
 // The enumeration of enumerate_placements(), shared with the per-thread cache.
 template <class IT, class Traits>
 std::shared_ptr<const Placement_enumeration<IT>> cached_placements(const Rigid_body_collection<Traits>& c, std::size_t body,
@@ -1417,6 +1509,7 @@ std::shared_ptr<const Placement_enumeration<IT>> cached_placements(const Rigid_b
 
   Placement_plan plan = Placement_planner<Traits>(c, b).run();
   auto out = std::make_shared<Placement_enumeration<IT>>();
+  bool cacheable = true;
   out->inconsistent = plan.inconsistent;
   out->singular = plan.singular;
   if (plan.inconsistent.empty()) {
@@ -1456,22 +1549,20 @@ std::shared_ptr<const Placement_enumeration<IT>> cached_placements(const Rigid_b
                         " square roots, more than the limit of exact decisions (maximal_exact_square_roots = " +
                         std::to_string(maximal_exact_square_roots) + ")";
     else if (!out->undecided.empty() && plan.slack == 0) {
-      // exact input: the open choices are made exactly (a height exactly 0 is a double placement);
-      // CORE computes in the FPU's default rounding, whatever the caller's
-      CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
-      Placement_enumerator<CORE::Expr> e(plan, max_placements);
-      e.set_deadline(std::chrono::steady_clock::now() +
-                     std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(maximal_exact_seconds)));
-      auto all = e.run();
-      if (e.stopped()) {
+      // exact input: the open choices are made exactly (a height exactly 0 is a double placement)
+      Exact_placements<IT> x = exact_placements<IT>(plan, max_placements, maximal_exact_seconds);
+      cacheable = !x.cut;
+      if (!x.done) {
         // the answer of the last interval pass stands, undecided, and says why
-        out->undecided += "; not decided exactly either: the exact decisions (a tower of up to " + std::to_string(roots) +
-                          " square roots) were stopped after " + std::to_string(int(maximal_exact_seconds)) +
-                          " s (maximal_exact_seconds)";
+        out->undecided += "; not decided exactly either: " +
+                          (x.why.empty() ? "the exact decisions (a tower of up to " + std::to_string(roots) +
+                                               " square roots) were stopped after " + std::to_string(int(maximal_exact_seconds)) +
+                                               " s (maximal_exact_seconds)"
+                                         : x.why);
       } else {
-        out->complete = !e.truncated();
-        out->undecided = e.undecided();  // only what exact arithmetic leaves: three points exactly on a line
-        out->placements = convert_exact_enclosures<IT>(all, e.frames());
+        out->complete = !x.truncated;
+        out->undecided = x.undecided;  // only what exact arithmetic leaves: three points exactly on a line
+        out->placements = std::move(x.placements);
         out->relative_width = relative_width(out->placements, plan.scale);
         out->decided_exactly = true;
         if (!out->undecided.empty()) out->undecided = "in exact arithmetic, " + out->undecided;
@@ -1486,6 +1577,7 @@ std::shared_ptr<const Placement_enumeration<IT>> cached_placements(const Rigid_b
                           " trilaterated point is excluded by a further distance or an orientation, " +
                           (out->decided_exactly ? std::string("exactly") : "in intervals at " + std::to_string(out->precision) + " bits") + ")";
   }
+  if (!cacheable) return out;  // (a later solve decides it again)
   cache.emplace_back(key, out);
   if (cache.size() > 32) cache.pop_front();
   return out;

@@ -1438,6 +1438,9 @@ Scene_solve_result solve_scene(const Rigid_body_collection<Traits>& original, co
                                const Incidence_tree& tree, const Well_formed_selection& selection,
                                const Scene_solve_parameters& parameters = Scene_solve_parameters())
 {
+  // the interrupt and the time limit also cut the wait for the exact decisions of a body
+  // (run in a child process, see enumerate_placements())
+  internal::Wait_stop_scope stop(parameters.interrupt, parameters.maximal_seconds);
   const long k = internal::size_exponent(c);
   if (k >= -20 && k <= 20) return internal::solve_scene_with_precision<IT, NT>(original, c, tree, selection, parameters);
   Scene_solve_result r = internal::solve_scene_with_precision<IT, NT>(internal::scaled_collection(original, -k),

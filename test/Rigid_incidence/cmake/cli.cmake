@@ -391,6 +391,16 @@ if(TARGET rigid_incidence)
                    "-DCHECK_PROGRAM=$<TARGET_FILE:solve_json_check>" "-DCHECK_ARGS=STDOUT_FILE|${_ri_exact}|--complete|false"
                    -P ${_ri_cli_script})
   set_tests_properties(cli_solve_exact_decisions_stopped PROPERTIES TIMEOUT 300)
+  # one exact sign that runs for minutes inside one step (no clock is checked in it): the
+  # child process of the exact decisions is killed at the limit
+  set(_ri_sign ${CMAKE_CURRENT_LIST_DIR}/../data/exact_sign_stopped.json)
+  add_test(NAME cli_solve_exact_sign_stopped
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${_ri_sign}|--json" -DEXPECT_RC=0
+                   "-DEXPECT_STDOUT=were stopped after 10 s \\(maximal_exact_seconds\\)"
+                   "-DSTDOUT_FILE=${CMAKE_CURRENT_BINARY_DIR}/cli_solve_exact_sign_stopped.json"
+                   "-DCHECK_PROGRAM=$<TARGET_FILE:solve_json_check>" "-DCHECK_ARGS=STDOUT_FILE|${_ri_sign}|--complete|false"
+                   -P ${_ri_cli_script})
+  set_tests_properties(cli_solve_exact_sign_stopped PROPERTIES TIMEOUT 300)
   add_test(NAME cli_usage_max_seconds_negative
            COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${_ri_d}/tetra.json|--max-seconds|-1" -DEXPECT_RC=1
                    "-DEXPECT_STDERR=--max-seconds: '-1' is not a positive number" -P ${_ri_cli_script})
