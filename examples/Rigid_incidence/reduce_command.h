@@ -8,9 +8,12 @@
 
 #include <CGAL/Rigid_incidence.h>
 
+#include "solve_command.h"
+
 #include <nlohmann/json.hpp>
 
 #include <iostream>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -54,6 +57,14 @@ int print(const RI::Rigid_body_collection<Traits>& c, const RI::Incidence_tree& 
   RI::internal::Rounding_guard<NT> guard;
   (void)guard;
   RI::Reduced_system<Traits, NT> r(c, t, s, charts, form);
+  // what a full solve would cost (not estimated: why)
+  std::optional<RI::Scene_solve_work> work;
+  std::string work_note;
+  try {
+    work = RI::scene_solve_work(c, t, s);
+  } catch (const std::exception& e) {
+    work_note = e.what();
+  }
   const auto& p = r.parametrization();
   const auto& names = p.variable_names();
   // the tree edge (child body) or free point each variable belongs to
@@ -78,6 +89,8 @@ int print(const RI::Rigid_body_collection<Traits>& c, const RI::Incidence_tree& 
                                                          {"charts", e.number_of_charts}});
     j["charts"] = charts_j;
     j["chart_combinations"] = r.number_of_chart_combinations();
+    if (work) j["work"] = solve_command::work_json(*work);
+    else j["work"] = {{"skipped", work_note}};
     nlohmann::ordered_json eqs = nlohmann::ordered_json::array();
     for (const auto& e : r.equations()) {
       std::vector<std::string> vn;
@@ -106,7 +119,11 @@ int print(const RI::Rigid_body_collection<Traits>& c, const RI::Incidence_tree& 
     std::cout << "  " << names[i] << "  [" << p.box()[i].first << ", " << p.box()[i].second << "]  " << owner[i] << "\n";
   std::cout << "charts:";
   for (const auto& e : p.edges()) std::cout << " " << c.body(e.child).name << "=" << e.chart << "/" << e.number_of_charts;
-  std::cout << "  (" << r.number_of_chart_combinations() << " combinations for a full solve)\n";
+  std::cout << "  (" << r.number_of_chart_combinations() << " chart combination" << (r.number_of_chart_combinations() == 1 ? "" : "s") << ")\n";
+  // (a solve uses the quaternion charts, whatever --form shows here)
+  if (work) std::cout << "work of a full solve" << (form == RI::Rotation_form::STEREOGRAPHIC ? " (in quaternion charts)" : "") << ": "
+                      << RI::internal::describe_work(*work) << "\n";
+  else std::cout << "work of a full solve: not estimated (" << work_note << ")\n";
   std::cout << "\nequations:\n";
   for (std::size_t k = 0; k < r.equations().size(); ++k) {
     const auto& e = r.equations()[k];

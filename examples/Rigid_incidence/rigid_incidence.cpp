@@ -21,6 +21,7 @@
 #include <algorithm>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -298,6 +299,14 @@ int analyze(const Options& o)
     equations = wf.remaining_count + c.distances().size();
   }
   const long reduced_variables = t.weight + 3 * dof.free_points;
+  // what a full solve would cost: combinations of charts and placements, the system's blocks
+  std::optional<RI::Scene_solve_work> work;
+  std::string work_note;
+  try {
+    work = RI::scene_solve_work(c, t, wf);
+  } catch (const std::exception& e) {
+    work_note = e.what();
+  }
   if (!o.dot_seam.empty()) {
     std::ofstream dot(o.dot_seam);
     if (!dot) { std::cerr << "rigid_incidence: cannot write " << o.dot_seam << "\n"; return 1; }
@@ -408,6 +417,8 @@ int analyze(const Options& o)
     j["reduced_equations"] = equations;
     j["reduced_variables"] = reduced_variables;
     j["naive_variables"] = naive;
+    if (work) j["work"] = solve_command::work_json(*work);
+    else j["work"] = {{"skipped", work_note}};
     std::cout << j.dump(2) << "\n";
     return 0;
   }
@@ -526,6 +537,8 @@ int analyze(const Options& o)
               << (matroid_done ? (mi.generic_dof() > 0 ? "under-constrained" : "over-constrained")
                                : dof.verdict() + " by the dof count")
               << ": the variables and the equations will not form a square system with isolated solutions\n";
+  if (work) std::cout << "work of a full solve: " << RI::internal::describe_work(*work) << "\n";
+  else std::cout << "work of a full solve: not estimated (" << work_note << ")\n";
   return 0;
 }
 

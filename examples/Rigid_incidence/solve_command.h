@@ -46,6 +46,16 @@ struct Solve_options
 // answer is printed (the exit status is then 128 + the signal); a second one ends the
 // program at once (the default action, restored by the first).
 inline std::atomic<bool> interrupted{false};
+
+// Scene_solve_work as JSON (analyze, reduce)
+inline nlohmann::ordered_json work_json(const RI::Scene_solve_work& w)
+{
+  nlohmann::ordered_json placements = nlohmann::ordered_json::array();
+  for (const auto& p : w.placements) placements.push_back({{"body", p.first}, {"placements", p.second}});
+  return {{"chart_combinations", w.chart_combinations}, {"placement_combinations", w.placement_combinations},
+          {"placements", placements}, {"systems", w.systems()}, {"variables", w.variables}, {"equations", w.equations},
+          {"block_sizes", w.block_sizes}, {"independent_parts", w.independent_parts}};
+}
 inline volatile std::sig_atomic_t signal_received = 0;
 inline void on_signal(int sig)
 {
@@ -597,7 +607,7 @@ int solve(const RI::Scene& scene, const RI::Rigid_body_collection<Traits>& input
     std::cout << "\nconfiguration " << ++k << ": " << (x.certified ? "certified" : "NOT certified")
               << (x.on_inequality_boundary ? " (on an inequality's boundary)" : "")
               << (x.singular ? ", SINGULAR (a double configuration: " + x.singular_reason + ")" : "")
-              << (x.coefficient_precision != 53 ? ", coefficients at " + (x.coefficient_precision ? std::to_string(x.coefficient_precision) + " bits" : std::string("exact")) : std::string())
+              << (x.coefficient_precision != 53 && x.coefficient_precision != 0 ? ", coefficients at " + std::to_string(x.coefficient_precision) + " bits" : std::string())
               << ", max residual "
               << std::setprecision(3) << x.max_residual << " (relative to the scene's size " << x.max_relative_residual << ")"
               << std::setprecision(10) << " in the original system\n  parameters:";

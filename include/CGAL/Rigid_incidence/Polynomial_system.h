@@ -171,11 +171,20 @@ public:
     }
     return d;
   }
+  /// The degree in each variable, in one pass over the terms (all 0 for the zero polynomial).
+  std::vector<unsigned> degrees() const
+  {
+    std::vector<unsigned> d(n_, 0);
+    for (const auto& t : t_)
+      for (std::size_t i = 0; i < n_; ++i) d[i] = (std::max)(d[i], t.first[i]);
+    return d;
+  }
   /// The variables of positive degree, increasing.
   std::vector<std::size_t> variables() const
   {
+    const std::vector<unsigned> d = degrees();
     std::vector<std::size_t> v;
-    for (std::size_t i = 0; i < n_; ++i) if (degree(i) > 0) v.push_back(i);
+    for (std::size_t i = 0; i < n_; ++i) if (d[i] > 0) v.push_back(i);
     return v;
   }
   /// The number of coefficients of the dense tensor-product array over the variables of
@@ -184,7 +193,7 @@ public:
   double dense_array_size() const
   {
     double m = 1;
-    for (std::size_t i = 0; i < n_; ++i) m *= double(degree(i)) + 1;
+    for (unsigned d : degrees()) m *= double(d) + 1;
     return m;
   }
   /// The partial derivative with respect to x_i.

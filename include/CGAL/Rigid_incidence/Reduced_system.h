@@ -38,6 +38,11 @@ struct Reduced_equation
   std::vector<unsigned> degrees;       ///< the degree in each of `variables`
   unsigned total_degree = 0;           ///< its total degree
   std::size_t frame = 0;               ///< the body whose frame it is written in (the lowest common ancestor)
+  /// per tree edge, the degree of `polynomial` as a form in the edge's homogeneous rotation
+  /// coordinates (a hinge's (a, b), a free rotation's q0..q3): twice the power of the edge's
+  /// \f$D_e\f$ it was multiplied by, 0 for an edge it does not involve (what a change of chart
+  /// needs, see `Reduced_system::changes_charts()`)
+  std::vector<unsigned> rotation_degree;
 };
 
 /*!
@@ -144,6 +149,48 @@ public:
       for (std::size_t q : c.body(b).points) n += covered[q];
       if (n < 3) loose_.push_back(b);
     }
+  }
+
+  /*!
+  The reduced system of the chart combination `charts` made from `base` (chart 0 on every
+  edge, `base.changes_charts()`) by a change of chart of each equation, not a new reduction:
+  an equation is a form in each edge's homogeneous rotation coordinates (degree
+  `Reduced_equation::rotation_degree`), written with the chart's coordinate set to 1. For a
+  hinge, \f$q = (L a, b u)\f$ with chart 0 at \f$a = 1, b = t\f$ and chart 1 at \f$a = s, b = 1\f$, a
+  term \f$c\,t^i\f$ of degree \f$d\f$ becomes \f$c\,s^{d-i}\f$; for a free rotation, chart 0 at
+  \f$q_0 = 1\f$ and chart \f$j\f$ at \f$q_j = 1\f$, a term \f$c\,q_1^{a_1} q_2^{a_2} q_3^{a_3}\f$ would get
+  \f$q_0^{d - a_1 - a_2 - a_3}\f$ and lose \f$q_j\f$ (not done: see `changes_charts()`). The coefficients move, none is computed:
+  the same equations as a direct build up to the choice between equivalent forms (a direct
+  build multiplies the maps along the tree again: for a chain of ten tetrahedra, whose closing
+  equation has 3^9 terms, 0.13 s a combination against 0.07 s, both mostly the sparse
+  polynomial's map). The parametrization, for the configurations, is that of `charts`.
+  \throws Input_error if `base` does not change charts, or an equation is not a form of its
+  `rotation_degree` (an internal error).
+  */
+  Reduced_system(const Reduced_system& base, const std::vector<int>& charts)
+    : c_(base.c_), tree_(base.tree_),
+      p_(new Parametrization(base.c_, base.tree_, charts, Rotation_form::QUATERNION_CHARTS, base.placements_)),
+      placements_(base.placements_), independence_(base.independence_), left_out_(base.left_out_), loose_(base.loose_)
+  {
+    if (!base.changes_charts()) throw Input_error("reduced system: a change of chart needs a system of chart 0 in quaternion charts, without translations");
+    internal::Rounding_guard<NT> guard;
+    (void)guard;
+    for (const auto& e : base.equations_) equations_.push_back(change_chart(e));
+  }
+
+  /// `true` if the systems of the other chart combinations can be made from this one by a
+  /// change of chart (the constructor above): quaternion charts, chart 0 on every edge, and
+  /// every edge a hinge. (A free rotation, q0 = 1 to qj = 1, is the same homogenization, but
+  /// the standardization leaves one only beside a translation in the scenes tried, whose
+  /// equations `linearize_translations()` mixes: such systems are built directly.)
+  bool changes_charts() const
+  {
+    if (p_->form() != Rotation_form::QUATERNION_CHARTS) return false;
+    for (const auto& e : p_->edges())
+      if (e.chart != 0 || !e.translation.empty() || e.rotation.size() != 1) return false;
+    for (const auto& e : equations_)
+      if (e.rotation_degree.size() != p_->edges().size()) return false;
+    return true;
   }
 
   /// The collection.
@@ -261,25 +308,67 @@ private:
     for (std::size_t b : tree_.covering_set) if (c_.body(b).contains(p)) r.push_back(b);
     return r;
   }
-  Reduced_equation<NT> finish(const Constraint& k, Polynomial poly, std::size_t frame) const
+  // den: the powers of the edges' D_e the polynomial was multiplied by (null: not known, as
+  // after the linearization of a translation, which mixes equations; no change of chart then)
+  Reduced_equation<NT> finish(const Constraint& k, Polynomial poly, std::size_t frame, const std::map<std::size_t, unsigned>* den) const
   {
     Reduced_equation<NT> e;
     e.origin = k;
     e.label = describe(c_, k);
     e.polynomial = std::move(poly);
-    e.variables = e.polynomial.variables();
-    for (std::size_t v : e.variables) e.degrees.push_back(e.polynomial.degree(v));
-    e.total_degree = e.polynomial.total_degree();
     e.frame = frame;
+    if (den) {
+      e.rotation_degree.assign(p_->edges().size(), 0);
+      for (const auto& d : *den) if (d.first < e.rotation_degree.size()) e.rotation_degree[d.first] = 2 * d.second;
+    }
+    set_support(e);
     return e;
+  }
+  static void set_support(Reduced_equation<NT>& e)
+  {
+    const std::vector<unsigned> d = e.polynomial.degrees();
+    e.variables.clear();
+    e.degrees.clear();
+    for (std::size_t v = 0; v < d.size(); ++v)
+      if (d[v] > 0) { e.variables.push_back(v); e.degrees.push_back(d[v]); }
+    e.total_degree = e.polynomial.total_degree();
+  }
+  // equation `e` of chart 0 on every edge, in this system's charts (see the constructor)
+  Reduced_equation<NT> change_chart(const Reduced_equation<NT>& e) const
+  {
+    Reduced_equation<NT> out;  // (not a copy of e: its polynomial can have 3^9 terms)
+    out.origin = e.origin;
+    out.label = e.label;
+    out.frame = e.frame;
+    out.rotation_degree = e.rotation_degree;
+    Polynomial q(e.polynomial.number_of_variables());
+    for (const auto& t : e.polynomial.terms()) {
+      typename Polynomial::Exponent x = t.first;
+      for (std::size_t k = 0; k < p_->edges().size(); ++k) {
+        const auto& edge = p_->edges()[k];
+        if (edge.chart == 0) continue;
+        const auto& v = edge.rotation;  // (chart 0: the variables of b, or of q1, q2, q3)
+        unsigned used = 0;
+        for (std::size_t i : v) used += t.first[i];
+        if (used > e.rotation_degree[k])
+          throw Input_error("reduced system: equation '" + e.label + "' is not a form of degree " + std::to_string(e.rotation_degree[k]) +
+                            " in the rotation of tree edge " + std::to_string(k) + " (internal error)");
+        const unsigned rest = e.rotation_degree[k] - used;  // the exponent of a (hinge) or q0
+        x[v[0]] = rest;  // a = s, b = 1 (changes_charts(): hinges only)
+      }
+      q.add_term(x, t.second);
+    }
+    out.polynomial = std::move(q);
+    set_support(out);
+    return out;
   }
   Reduced_equation<NT> make_equation(const Constraint& k) const
   {
     const std::size_t npos = Parametrization::npos;
     if (!k.is_distance()) {
       const Incidence& i = k.incidence;
-      return finish(k, p_->incidence_difference(i.point, i.body_a, i.body_b, i.coordinate).num,
-                    p_->lowest_common_ancestor(i.body_a, i.body_b));
+      auto r = p_->incidence_difference(i.point, i.body_a, i.body_b, i.coordinate);
+      return finish(k, std::move(r.num), p_->lowest_common_ancestor(i.body_a, i.body_b), &r.den);
     }
     NT d2;
     if (k.origin == Constraint::BODY_DISTANCE) {
@@ -316,7 +405,7 @@ private:
           for (unsigned j = 0; j < x.second; ++j) den = den * p_->denominator(x.first);
         Polynomial f = r.num - d2 * den;
         std::size_t frame = (a == npos || b == npos) ? tree_.root : p_->lowest_common_ancestor(a, b);
-        Reduced_equation<NT> e = finish(k, f, frame);
+        Reduced_equation<NT> e = finish(k, f, frame, &r.den);
         if (!have || e.variables.size() < best.variables.size() ||
             (e.variables.size() == best.variables.size() && e.total_degree < best.total_degree)) {
           best = e;
@@ -392,7 +481,7 @@ private:
         Polynomial mu(p.number_of_variables());
         for (const auto& ct : sq[0].terms()) mu.add_term(ct.first, ct.second / k);
         Polynomial r = p - mu * S;
-        Reduced_equation<NT> e = finish(equations_[i].origin, std::move(r), equations_[i].frame);
+        Reduced_equation<NT> e = finish(equations_[i].origin, std::move(r), equations_[i].frame, nullptr);
         e.label = equations_[i].label + ", minus " + (sq[0].terms().size() == 1 && sq[0].total_degree() == 0 ? "a multiple" : "D") +
                   " x (" + equations_[sphere].label + "): linear in " + p_->variable_names()[T[0]].substr(0, p_->variable_names()[T[0]].size() - 1);
         equations_[i] = std::move(e);

@@ -330,9 +330,11 @@ private:
     template <class NT> Equation make_equation(const Sparse_polynomial<NT>& f)
     {
       Equation e;
-      std::vector<std::size_t> vars = f.variables();
+      const std::vector<unsigned> all = f.degrees();  // (one pass over the terms)
+      std::vector<std::size_t> vars;
       std::vector<unsigned> degs;
-      for (std::size_t v : vars) degs.push_back(f.degree(v));
+      for (std::size_t v = 0; v < all.size(); ++v)
+        if (all[v] > 0) { vars.push_back(v); degs.push_back(all[v]); }
       e.shape.set(vars, degs);
       e.power.assign(e.shape.size, IT(0));
       for (const auto& t : f.terms()) {

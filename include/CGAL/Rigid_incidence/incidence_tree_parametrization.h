@@ -237,6 +237,8 @@ public:
   const std::vector<std::string>& variable_names() const { return names_; }
   /// The box of each variable.
   const std::vector<std::pair<double, double>>& box() const { return box_; }
+  /// The rotation form.
+  Rotation_form form() const { return form_; }
   /// The edges' parameters, in the order of `Incidence_tree::edges`.
   const std::vector<Edge_parameters>& edges() const { return edges_; }
   /// The tree edge (index) whose child is `body`, or `npos` (the root, or a body outside the tree).

@@ -16,8 +16,12 @@
 #include <CGAL/Rigid_incidence/Configuration.h>
 #include <CGAL/Rigid_incidence/Curve_tracer.h>
 #include <CGAL/Rigid_incidence/Reduced_system.h>
+#include <CGAL/Rigid_incidence/Solution_plan.h>
 #include <CGAL/Rigid_incidence/Subdivision_solver.h>
 #include <CGAL/Rigid_incidence/enclose_coordinates.h>
+
+#include <boost/graph/adjacency_list.hpp>
+#include <boost/graph/connected_components.hpp>
 
 #include <algorithm>
 #include <atomic>
@@ -100,6 +104,11 @@ struct Scene_solve_parameters
   /// A flag another thread or a signal handler may set (null: none): the solve stops as the
   /// time limit does, and `limits` says "interrupted".
   const std::atomic<bool>* interrupt = nullptr;
+  /// Build the reduced systems of a placement combination's chart combinations by a change of
+  /// chart of the one of chart 0 (`Reduced_system(base, charts)`: coefficients moved, not
+  /// computed again), where the scene allows it (quaternion charts, no free body); false: a
+  /// new reduction for each (the tests' oracle).
+  bool change_charts = true;
   /// Called after each combination of charts and placements is solved (empty: never), from
   /// the thread that called `solve_scene()`; the command-line tool prints it on a terminal.
   std::function<void(const Scene_solve_progress&)> progress;
@@ -301,6 +310,103 @@ std::vector<int> placement_counts(const Rigid_body_collection<Traits>& c, const 
     if (holds_pair_through_placement(c, tree, b))
       n[b] = (std::max)(1, int(cached_placements<CGAL::Interval_nt<false>>(c, b, maximal)->placements.size()));
   return n;
+}
+
+} // namespace internal
+
+/*!
+\ingroup PkgRigidIncidenceSolver
+\brief The size of a scene's solve, known before it runs (what `rigid_incidence reduce` and
+`analyze` report): the combinations of charts and placements for which `solve_scene()` builds
+and solves one reduced system each, and the structure of that system.
+*/
+struct Scene_solve_work
+{
+  std::size_t chart_combinations = 1;      ///< the product of the charts of every tree edge
+  /// the product of the placements of the bodies enumerated with the charts (the covering
+  /// bodies known by distances, and those outside whose equations depend on their placement)
+  std::size_t placement_combinations = 1;
+  /// those bodies with more than one placement, and how many each has
+  std::vector<std::pair<std::string, std::size_t>> placements;
+  std::size_t variables = 0;  ///< of the reduced system
+  std::size_t equations = 0;  ///< of the reduced system
+  /// the variables of each block of the reduced system's solution plan (`Solution_plan`), in
+  /// the order they would be solved; one block: the system is solved whole
+  std::vector<std::size_t> block_sizes;
+  /// the parts of the reduced system no equation links (the scene's configurations would be
+  /// the product of theirs)
+  std::size_t independent_parts = 0;
+  /// chart_combinations x placement_combinations (saturating at SIZE_MAX): the most reduced
+  /// systems a full solve builds and subdivides (fewer when two bodies' placements put a shared
+  /// pair of points at certainly different distances: `Scene_solve_statistics::placements_excluded`)
+  std::size_t systems() const
+  {
+    if (placement_combinations != 0 && chart_combinations > (std::numeric_limits<std::size_t>::max)() / placement_combinations)
+      return (std::numeric_limits<std::size_t>::max)();
+    return chart_combinations * placement_combinations;
+  }
+};
+
+/*!
+\ingroup PkgRigidIncidenceSolver
+\brief The size of the solve of the standard collection `c` on `tree` and `selection` (the
+arguments of `solve_scene()`), before it runs: it enumerates the placements of the bodies known
+by distances (cached for the solve) and builds the reduced system of the first combination.
+*/
+template <class Traits>
+Scene_solve_work scene_solve_work(const Rigid_body_collection<Traits>& c, const Incidence_tree& tree,
+                                  const Well_formed_selection& selection, std::size_t maximal_placements = default_maximal_placements)
+{
+  Scene_solve_work w;
+  auto times = [](std::size_t a, std::size_t b) {
+    return b != 0 && a > (std::numeric_limits<std::size_t>::max)() / b ? (std::numeric_limits<std::size_t>::max)() : a * b;
+  };
+  const std::vector<int> n = internal::placement_counts(c, tree, maximal_placements);
+  for (std::size_t b = 0; b < n.size(); ++b)
+    if (n[b] > 1) {
+      w.placements.emplace_back(c.body(b).name, std::size_t(n[b]));
+      w.placement_combinations = times(w.placement_combinations, std::size_t(n[b]));
+    }
+  internal::Rounding_guard<CGAL::Interval_nt<false>> guard;
+  const Reduced_system<Traits, CGAL::Interval_nt<false>> r(c, tree, selection);
+  for (const auto& e : r.parametrization().edges()) w.chart_combinations = times(w.chart_combinations, std::size_t(e.number_of_charts));
+  w.variables = r.number_of_variables();
+  w.equations = r.number_of_equations();
+  std::vector<std::vector<std::size_t>> support;
+  for (const auto& e : r.equations()) support.push_back(e.variables);
+  const Solution_plan plan(w.variables, support);
+  for (const auto& b : plan.blocks()) w.block_sizes.push_back(b.variables.size());
+  boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS> g(w.variables);
+  for (const auto& vs : support)
+    for (std::size_t k = 1; k < vs.size(); ++k) boost::add_edge(vs[0], vs[k], g);
+  std::vector<std::size_t> component(w.variables);
+  w.independent_parts = w.variables == 0 ? 0 : std::size_t(boost::connected_components(g, component.data()));
+  return w;
+}
+
+namespace internal {
+
+// "8 chart combinations x 4 placement combinations (body 'I2': 2, 'I3': 2) = at most 32
+// reduced systems; 3 equations in 3 variables: 1 block of 3, 1 independent part"
+inline std::string describe_work(const Scene_solve_work& w)
+{
+  std::ostringstream o;
+  o << w.chart_combinations << " chart combination" << (w.chart_combinations == 1 ? "" : "s") << " x " << w.placement_combinations
+    << " placement combination" << (w.placement_combinations == 1 ? "" : "s");
+  if (!w.placements.empty()) {
+    o << " (";
+    for (std::size_t k = 0; k < w.placements.size(); ++k)
+      o << (k ? ", " : "") << "body '" << w.placements[k].first << "': " << w.placements[k].second;
+    o << ")";
+  }
+  o << " = " << (w.systems() == (std::numeric_limits<std::size_t>::max)() ? std::string("over 1.8e19") : std::to_string(w.systems()))
+    << " reduced system" << (w.systems() == 1 ? "" : "s") << " at most; " << w.equations << " equation" << (w.equations == 1 ? "" : "s")
+    << " in " << w.variables << " variable" << (w.variables == 1 ? "" : "s") << ": ";
+  std::size_t largest = 0;
+  for (std::size_t b : w.block_sizes) largest = (std::max)(largest, b);
+  o << w.block_sizes.size() << " block" << (w.block_sizes.size() == 1 ? "" : "s") << " (largest: " << largest << " variable"
+    << (largest == 1 ? "" : "s") << "), " << w.independent_parts << " independent part" << (w.independent_parts == 1 ? "" : "s");
+  return o.str();
 }
 
 // The widest coefficient enclosure of a system, relative to the largest coefficient of its
@@ -965,11 +1071,20 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
       continue;
     }
     std::vector<int> charts(radix_c.size(), 0);
+    // the system of chart 0 of this placement combination, which the others are made from
+    std::optional<Reduced_system<Traits, NT>> base;
+    bool base_tried = !parameters.change_charts;
     do {
       if (retry && !retry->only.count(Scene_combination(placements, charts))) continue;
       if ((stopped = stop_reason())) break;
       auto t1 = Clock::now();
-      Reduced_system<Traits, NT> r(c, tree, selection, charts, Rotation_form::QUATERNION_CHARTS, placements);
+      if (!base_tried) {
+        base_tried = true;
+        base.emplace(c, tree, selection, std::vector<int>(radix_c.size(), 0), Rotation_form::QUATERNION_CHARTS, placements);
+        if (!base->changes_charts()) base.reset();
+      }
+      Reduced_system<Traits, NT> r = base ? Reduced_system<Traits, NT>(*base, charts)
+                                                : Reduced_system<Traits, NT>(c, tree, selection, charts, Rotation_form::QUATERNION_CHARTS, placements);
       Polynomial_system<NT> sys = r.system();
       for (std::size_t q = 0; q < orientation.size(); ++q) {
         auto g = r.orientation_numerator(orientation[q]);

@@ -255,6 +255,16 @@ if(TARGET rigid_incidence)
   add_test(NAME cli_reduce_pent_json
            COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=reduce|${_ri_d}/pent.json|--json" -DEXPECT_RC=0
                    "-DEXPECT_STDOUT=\"chart_combinations\": 16,[^$]*\"square\": true" -P ${_ri_cli_script})
+  # the work of a full solve, before it runs (issue 28, item 5); test_scene_solve_work checks
+  # the numbers against the solve itself
+  add_test(NAME cli_reduce_work
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=reduce|${_ri_d}/tetra.json" -DEXPECT_RC=0
+                   "-DEXPECT_STDOUT=work of a full solve: 8 chart combinations x 1 placement combination = 8 reduced systems at most; 3 equations in 3 variables: 1 block \\(largest: 3 variables\\), 1 independent part"
+                   -P ${_ri_cli_script})
+  add_test(NAME cli_analyze_work_json
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=analyze|${_ri_d}/bar_end.json|--json" -DEXPECT_RC=0
+                   "-DEXPECT_STDOUT=\"work\": {[^}]*\"chart_combinations\": 2,[^}]*\"systems\": 2,[^}]*\"independent_parts\": 1"
+                   -P ${_ri_cli_script})
   add_test(NAME cli_reduce_stereographic
            COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=reduce|${_ri_d}/pent.json|--form|stereographic" -DEXPECT_RC=0
                    "-DEXPECT_STDOUT=stereographic form[^\n]*: 4 variables, 4 equations" -P ${_ri_cli_script})
@@ -343,7 +353,7 @@ if(TARGET rigid_incidence)
                      -P ${_ri_cli_script})
   endif()
   # a time limit for the whole solve, and the interrupt (issue 28, item 5): a scene whose solve
-  # runs for 150 s (a chain of 10 tetrahedra) stops, and its partial answer is valid JSON whose solutions hold
+  # runs for 70 s (a chain of 10 tetrahedra) stops, and its partial answer is valid JSON whose solutions hold
   # in the scene and which says it is not complete (exit status 0 at the time limit, 130 or
   # 143 after SIGINT or SIGTERM, sent by coreutils' timeout)
   set(_ri_long ${CMAKE_CURRENT_LIST_DIR}/../data/tetrahedron_chain10.json)
@@ -401,6 +411,19 @@ if(TARGET rigid_incidence)
                    "-DCHECK_PROGRAM=$<TARGET_FILE:solve_json_check>" "-DCHECK_ARGS=STDOUT_FILE|${_ri_sign}|--complete|false"
                    -P ${_ri_cli_script})
   set_tests_properties(cli_solve_exact_sign_stopped PROPERTIES TIMEOUT 300)
+  # SIGTERM during those exact decisions: the child is killed at once (the wait looks at the
+  # solve's interrupt), the partial answer comes in a second, not after the 10 s of the limit
+  # (the test's TIMEOUT of 8 s fails otherwise)
+  if(RIGID_INCIDENCE_TIMEOUT)
+    add_test(NAME cli_solve_sigTERM_exact_decisions
+             COMMAND ${CMAKE_COMMAND} "-DTOOL=${RIGID_INCIDENCE_TIMEOUT}"
+                     "-DARGS=--preserve-status|-s|TERM|3|${_ri_tool}|solve|${_ri_sign}|--json" -DEXPECT_RC=143
+                     "-DEXPECT_STDOUT=\"interrupted after"
+                     "-DSTDOUT_FILE=${CMAKE_CURRENT_BINARY_DIR}/cli_solve_sigTERM_exact_decisions.json"
+                     "-DCHECK_PROGRAM=$<TARGET_FILE:solve_json_check>" "-DCHECK_ARGS=STDOUT_FILE|${_ri_sign}|--complete|false"
+                     -P ${_ri_cli_script})
+    set_tests_properties(cli_solve_sigTERM_exact_decisions PROPERTIES TIMEOUT 8)
+  endif()
   add_test(NAME cli_usage_max_seconds_negative
            COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${_ri_d}/tetra.json|--max-seconds|-1" -DEXPECT_RC=1
                    "-DEXPECT_STDERR=--max-seconds: '-1' is not a positive number" -P ${_ri_cli_script})
