@@ -58,13 +58,8 @@ int print(const RI::Rigid_body_collection<Traits>& c, const RI::Incidence_tree& 
   (void)guard;
   RI::Reduced_system<Traits, NT> r(c, t, s, charts, form);
   // what a full solve would cost (not estimated: why)
-  std::optional<RI::Scene_solve_work> work;
   std::string work_note;
-  try {
-    work = RI::scene_solve_work(c, t, s);
-  } catch (const std::exception& e) {
-    work_note = e.what();
-  }
+  const std::optional<RI::Scene_solve_work> work = solve_command::estimate_work(c, t, s, work_note);
   const auto& p = r.parametrization();
   const auto& names = p.variable_names();
   // the tree edge (child body) or free point each variable belongs to

@@ -300,13 +300,8 @@ int analyze(const Options& o)
   }
   const long reduced_variables = t.weight + 3 * dof.free_points;
   // what a full solve would cost: combinations of charts and placements, the system's blocks
-  std::optional<RI::Scene_solve_work> work;
   std::string work_note;
-  try {
-    work = RI::scene_solve_work(c, t, wf);
-  } catch (const std::exception& e) {
-    work_note = e.what();
-  }
+  const std::optional<RI::Scene_solve_work> work = solve_command::estimate_work(c, t, wf, work_note);
   if (!o.dot_seam.empty()) {
     std::ofstream dot(o.dot_seam);
     if (!dot) { std::cerr << "rigid_incidence: cannot write " << o.dot_seam << "\n"; return 1; }

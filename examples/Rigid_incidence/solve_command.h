@@ -20,6 +20,7 @@
 #include <iomanip>
 #include <iostream>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <unistd.h>
@@ -46,6 +47,19 @@ struct Solve_options
 // answer is printed (the exit status is then 128 + the signal); a second one ends the
 // program at once (the default action, restored by the first).
 inline std::atomic<bool> interrupted{false};
+
+// The work of a full solve (analyze, reduce), or nothing and why it could not be estimated
+template <class Traits>
+std::optional<RI::Scene_solve_work> estimate_work(const RI::Rigid_body_collection<Traits>& c, const RI::Incidence_tree& t,
+                                                  const RI::Well_formed_selection& s, std::string& why)
+{
+  try {
+    return RI::scene_solve_work(c, t, s);
+  } catch (const std::exception& e) {
+    why = e.what();
+    return std::nullopt;
+  }
+}
 
 // Scene_solve_work as JSON (analyze, reduce)
 inline nlohmann::ordered_json work_json(const RI::Scene_solve_work& w)
