@@ -2,7 +2,9 @@
 # Runs the test suite: install what is missing, build, ctest; then a smoke set (label
 # 'sanitize': the random planted scenes, which reach every stage of the pipeline, and the
 # reader on malformed input) built with AddressSanitizer and UndefinedBehaviorSanitizer.
-# About 25 to 30 minutes on 2 cores (CI's run: 24 min at de5cb5d; the build dominates).
+# The build dominates (CI's run: 24 min at de5cb5d, 40 min at 54396c0 without the sanitizer
+# pass; since then the whole-scene solves are instantiated once for all test programs, see
+# test/Rigid_incidence/solve_scene_instances.h).
 # Usage: scripts/test.sh [--no-sanitize] [--sanitize-only] [--sanitize-core] [--sanitize-all] [extra ctest arguments]
 #   --sanitize-core: the core set under the sanitizers (label 'core': reader, standardize,
 #                    placements, solver, random scenes and the CLI; about 20 minutes more)

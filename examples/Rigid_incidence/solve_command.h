@@ -14,6 +14,8 @@
 #include <atomic>
 #include <chrono>
 #include <csignal>
+#include <signal.h>
+#include <ctime>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -44,8 +46,8 @@ struct Solve_options
 };
 
 // SIGINT and SIGTERM during a solve: the solve stops as at its time limit and the partial
-// answer is printed (the exit status is then 128 + the signal); a second one ends the
-// program at once (the default action, restored by the first).
+// answer is printed (the exit status is then 128 + the signal); a second one, more than half a
+// second after the first, ends the program at once (the default action).
 inline std::atomic<bool> interrupted{false};
 
 // The work of a full solve (analyze, reduce), or nothing and why it could not be estimated
@@ -71,11 +73,24 @@ inline nlohmann::ordered_json work_json(const RI::Scene_solve_work& w)
           {"block_sizes", w.block_sizes}, {"independent_parts", w.independent_parts}};
 }
 inline volatile std::sig_atomic_t signal_received = 0;
+inline std::atomic<long long> first_signal_ns{0};
+// A signal repeated within half a second is the same request: GNU timeout (and kill of a
+// process group) sends SIGTERM to the program and then to its group, so the program receives
+// it twice at once; only a later one ends the program (clock_gettime and raise are
+// async-signal-safe).
 inline void on_signal(int sig)
 {
-  signal_received = sig;
-  interrupted.store(true);
-  std::signal(sig, SIG_DFL);
+  timespec now{};
+  ::clock_gettime(CLOCK_MONOTONIC, &now);
+  const long long ns = (long long)now.tv_sec * 1000000000LL + now.tv_nsec;
+  if (!signal_received) {
+    first_signal_ns.store(ns);
+    signal_received = sig;
+    interrupted.store(true);
+  } else if (ns - first_signal_ns.load() > 500000000LL) {
+    std::signal(sig, SIG_DFL);
+    std::raise(sig);
+  }
 }
 
 // The progress line on standard error, when it is a terminal (at most 4 times a second,
@@ -446,8 +461,12 @@ int solve(const RI::Scene& scene, const RI::Rigid_body_collection<Traits>& input
   // pair through a placement), else certified intervals
   const bool exact = RI::exact_coefficients(c, t);
   RI::Scene_solve_result r;
-  std::signal(SIGINT, on_signal);
-  std::signal(SIGTERM, on_signal);
+  struct sigaction act {};
+  act.sa_handler = on_signal;
+  sigemptyset(&act.sa_mask);
+  act.sa_flags = SA_RESTART;  // (the handler stays installed: on_signal decides what a repeat does)
+  ::sigaction(SIGINT, &act, nullptr);
+  ::sigaction(SIGTERM, &act, nullptr);
   if (o.precision <= 53) {
     if (exact) r = run<CGAL::Interval_nt<false>, CGAL::Gmpq>(scene, input, c, t, s, o);
     else r = run<CGAL::Interval_nt<false>, CGAL::Interval_nt<false>>(scene, input, c, t, s, o);

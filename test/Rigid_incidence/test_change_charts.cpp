@@ -27,6 +27,7 @@
 #include <string>
 
 #include "test_check.h"
+#include "solve_scene_instances.h"
 
 namespace RI = CGAL::Rigid_incidence;
 typedef RI::Rigid_incidence_traits<CGAL::Simple_cartesian<CGAL::Gmpq>> Traits;

@@ -21,6 +21,7 @@
 #include <CGAL/Gmpq.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Rigid_incidence.h>
+#include "solve_scene_instances.h"
 
 #include "planted_scene.h"
 

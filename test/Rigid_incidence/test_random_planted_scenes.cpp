@@ -32,6 +32,7 @@
 #include <CGAL/Gmpq.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Rigid_incidence.h>
+#include "solve_scene_instances.h"
 #include <CGAL/Rigid_incidence/IO/read_scene.h>
 
 #include "planted_scene.h"

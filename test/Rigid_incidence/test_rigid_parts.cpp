@@ -28,6 +28,7 @@
 
 #include "planted_scene.h"
 #include "test_check.h"
+#include "solve_scene_instances.h"
 
 #include <algorithm>
 #include <cmath>

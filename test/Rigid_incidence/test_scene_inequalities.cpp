@@ -19,6 +19,7 @@
 #include <CGAL/Rigid_incidence.h>
 
 #include "test_check.h"
+#include "solve_scene_instances.h"
 
 #include <algorithm>
 #include <array>

@@ -23,6 +23,7 @@
 #include <Eigen/Dense>
 
 #include "test_check.h"
+#include "solve_scene_instances.h"
 
 #include <algorithm>
 #include <cmath>

@@ -16,6 +16,7 @@
 //    configurations as without it, complete, no limit named.
 
 #include "test_check.h"
+#include "solve_scene_instances.h"
 
 #include <CGAL/Gmpq.h>
 #include <CGAL/Interval_nt.h>

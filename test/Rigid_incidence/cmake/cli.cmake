@@ -390,6 +390,20 @@ if(TARGET rigid_incidence)
   if(RIGID_INCIDENCE_TIMEOUT)
     set_tests_properties(cli_solve_sigINT cli_solve_sigTERM PROPERTIES TIMEOUT 300)
   endif()
+  # SIGTERM sent twice at once (as GNU timeout does, to the tool and then to its process
+  # group): one request, the partial answer still comes (CI once saw the second one end the
+  # tool with nothing printed)
+  find_program(RIGID_INCIDENCE_SH sh)
+  if(RIGID_INCIDENCE_SH)
+    add_test(NAME cli_solve_sigTERM_twice
+             COMMAND ${CMAKE_COMMAND} "-DTOOL=${RIGID_INCIDENCE_SH}"
+                     "-DARGS=${CMAKE_CURRENT_LIST_DIR}/../cli/signal_twice.sh|TERM|2|${_ri_tool}|solve|${_ri_long}|--json"
+                     -DEXPECT_RC=143 "-DEXPECT_STDOUT=\"interrupted after"
+                     "-DSTDOUT_FILE=${CMAKE_CURRENT_BINARY_DIR}/cli_solve_sigTERM_twice.json"
+                     "-DCHECK_PROGRAM=$<TARGET_FILE:solve_json_check>" "-DCHECK_ARGS=STDOUT_FILE|${_ri_long}|--complete|false"
+                     -P ${_ri_cli_script})
+    set_tests_properties(cli_solve_sigTERM_twice PROPERTIES TIMEOUT 300)
+  endif()
   # exact decisions that would take over 20 minutes (one CORE sign of a zero in a tower over
   # long rationals) stop after maximal_exact_seconds: the answer comes, not complete, and says
   # why; its configurations hold in the scene
