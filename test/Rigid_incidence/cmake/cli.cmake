@@ -198,6 +198,7 @@ if(TARGET rigid_incidence)
 
   # --- --json, checked by a small program
   add_executable(cli_json_check ${CMAKE_CURRENT_LIST_DIR}/../cli_json_check.cpp)
+  ri_test_flags(cli_json_check)
   target_link_libraries(cli_json_check PRIVATE nlohmann_json::nlohmann_json)
   set(_ri_expect_tetra "--bodies|7|--implied|4|--weight|3|--depth-sum|3|--root|I1{P12,P23,P31}|--reduced|3|--naive|12|--covering|4|--well-formed|15|--remaining|0|--equations|3|--body-distances|3|--conflicts|0|--generic-dof|0")
   # naive_variables = 6(k-1) over the k bodies of the scene (3 for tetra: 12), as the tool defines
@@ -306,6 +307,7 @@ endif()
 # examples/Rigid_incidence/data/README.md).
 if(TARGET rigid_incidence)
   add_executable(solve_json_check ${CMAKE_CURRENT_LIST_DIR}/../solve_json_check.cpp)
+  ri_test_flags(solve_json_check)
   target_link_libraries(solve_json_check PRIVATE nlohmann_json::nlohmann_json)
   set(_ri_d ${RIGID_INCIDENCE_DATA_DIR})
   # scene  expectations
@@ -613,6 +615,7 @@ endif()
 # with the sanitizers.
 if(TARGET rigid_incidence)
   add_executable(system_json_check ${CMAKE_CURRENT_LIST_DIR}/../system_json_check.cpp)
+  ri_test_flags(system_json_check)
   target_link_libraries(system_json_check PRIVATE nlohmann_json::nlohmann_json)
   set(_ri_phc ${RIGID_INCIDENCE_DATA_DIR}/systems/phcpack)
   set(_ri_phc_systems caprasse_new chandra4 chemequ cyclic5 eco5 fourbar game4two katsura5 lorentz rbpl rediff3 sendra)
