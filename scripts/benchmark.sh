@@ -7,7 +7,7 @@ root="$(cd "$(dirname "$0")/.." && pwd)"
 "$root/scripts/install_deps.sh"
 build="${BENCH_BUILD_DIR:-$root/build-bench}"
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DRIGID_INCIDENCE_BUILD_BENCHMARKS=ON \
-      -DRIGID_INCIDENCE_BUILD_TESTS=OFF -DRIGID_INCIDENCE_BUILD_EXAMPLES=OFF >/dev/null
+      -DRIGID_INCIDENCE_BUILD_TESTS=OFF -DRIGID_INCIDENCE_BUILD_EXAMPLES=ON >/dev/null
 cmake --build "$build" -j2
 mkdir -p "$build/results"
 "$build/benchmark/Rigid_incidence/benchmark_incidence_tree" "$build/results/incidence_tree" "${1:-40}" "${2:-5}"
@@ -35,3 +35,13 @@ cat "$build/results/solver.md"
 "$build/benchmark/Rigid_incidence/benchmark_plan" "$build/results/plan" 2 10 30
 echo
 cat "$build/results/plan.md"
+# Issue 28's scene families (chains, rings, trees of bodies, molecular rings, stacked platforms,
+# braced strips; planted, scripts/make_scene_family.py) at growing sizes until a solve is not
+# complete within 60 s; the tool of this build, and side by side the one RI_BASELINE_TOOL names
+# (another build, e.g. of an older commit); also writes scene_families.svg. Up to about 15 minutes.
+baseline=()
+[ -n "${RI_BASELINE_TOOL:-}" ] && baseline=(--tool "before=$RI_BASELINE_TOOL")
+python3 "$root/benchmark/Rigid_incidence/scene_families.py" "${baseline[@]}" \
+        --tool "now=$build/examples/Rigid_incidence/rigid_incidence" --out "$build/results/scene_families"
+echo
+cat "$build/results/scene_families.md"
