@@ -5,7 +5,7 @@
 # the k-2 distances b_i - a_{i+3} and closed by a_0 - b_k (issue 28's first family): exact
 # rational world points, each body given in its own frame by a rational rotation (Cayley) and
 # translation, so the planted configuration solves the scene exactly.
-import json, random, sys
+import json, os, random, sys
 from fractions import Fraction as F
 k = int(sys.argv[1]); seed = int(sys.argv[2]) if len(sys.argv) > 2 else 1
 rnd = random.Random(seed)
@@ -14,17 +14,8 @@ a = []; b = []
 x = F(0)
 for i in range(k + 1):
     a.append((x, r(-1,1), r(-1,1))); b.append((x + r(0,1), r(2,4), r(-2,2))); x += F(2) + r(0,1)
-def cayley(u):
-    p, q, s = u
-    n = 1 + p*p + q*q + s*s
-    return [[(1 + p*p - q*q - s*s)/n, 2*(p*q - s)/n, 2*(p*s + q)/n],
-            [2*(p*q + s)/n, (1 - p*p + q*q - s*s)/n, 2*(q*s - p)/n],
-            [2*(p*s - q)/n, 2*(q*s + p)/n, (1 - p*p - q*q + s*s)/n]]
-def local(R, t, X):  # y = R^T (X - t)
-    d = [X[j] - t[j] for j in range(3)]
-    return [sum(R[j][i]*d[j] for j in range(3)) for i in range(3)]
-def s(v): return str(v.numerator) if v.denominator == 1 else f"{v.numerator}/{v.denominator}"
-def d2(P, Q): return sum((P[j]-Q[j])**2 for j in range(3))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from make_scene_family import cayley, local, d2, text as s  # the exact helpers of the families
 bodies = []
 for i in range(k):
     R = cayley((r(-2,2,3), r(-2,2,3), r(-2,2,3))) if i else [[F(1),0,0],[0,F(1),0],[0,0,F(1)]]
