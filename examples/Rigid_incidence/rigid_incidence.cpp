@@ -37,7 +37,7 @@ static const char* usage_text =
   "                         [--coefficients auto|exact|interval] [--kernel exact|epick|epeck]\n"
   "  rigid_incidence solve SCENE.json [--json] [--tolerance EPS] [--precision BITS] [--fast]\n"
   "                        [--svg FILE] [--plot A.x,B.z] [--near CONFIG.json] [--max-boxes N]\n"
-  "                        [--max-seconds S] [--quiet] [--kernel K]\n"
+  "                        [--max-seconds S] [--quiet] [--no-plan] [--kernel K]\n"
   "  rigid_incidence family SCENE.json [--json] [--svg FILE] [--samples K] [--tolerance EPS]\n"
   "                        [--precision BITS] [--max-boxes N] [--kernel K]\n"
   "  rigid_incidence solve-system FILE [--json] [--tolerance EPS] [--precision BITS] [--fast]\n"
@@ -100,6 +100,8 @@ static const char* usage_text =
   "            chart combination (default 200000); --max-seconds S: a time limit for the\n"
   "            whole solve (what is not done by then is reported, the answer not complete);\n"
   "            a progress line on standard error when it is a terminal (--quiet: none);\n"
+  "            a reduced system of several blocks (its solution plan) is solved block after\n"
+  "            block (--no-plan: whole, for comparison);\n"
   "            Ctrl-C (SIGINT) or SIGTERM stops the solve and prints the partial answer,\n"
   "            incomplete, with exit status 130 or 143; --svg FILE: the configurations side by\n"
   "            side as line drawings; --near CONFIG.json: order the configurations by their\n"
@@ -549,8 +551,9 @@ int main(int argc, char** argv)
     const std::string& a = args[i];
     if (a == "--json") o.json = true;
     else if (a == "--no-plan") {
-      if (o.command != "solve-system") { std::cerr << "rigid_incidence: --no-plan is an option of solve-system\n"; return 1; }
+      if (o.command != "solve-system" && o.command != "solve") { std::cerr << "rigid_incidence: --no-plan is an option of solve and solve-system\n"; return 1; }
       o.no_plan = true;
+      o.solve.no_plan = true;
     } else if (a == "--fast") {
       if (o.command != "solve" && o.command != "solve-system") { std::cerr << "rigid_incidence: --fast is an option of solve\n"; return 1; }
       o.solve.fast = true;

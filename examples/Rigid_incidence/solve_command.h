@@ -38,6 +38,7 @@ struct Solve_options
   double tolerance = 1e-12;
   unsigned precision = 53;
   bool fast = false;
+  bool no_plan = false;        // --no-plan: each reduced system solved whole (for comparison)
   std::size_t max_boxes = 0;   // 0: the solver's default
   std::string svg, near;
   std::string plot;  // --plot A.x,B.z: the coordinates plotted against each other for curves
@@ -446,6 +447,7 @@ RI::Scene_solve_result run(const RI::Scene& scene, const RI::Rigid_body_collecti
   p.solver.fast = o.fast;
   if (o.max_boxes) p.solver.maximal_boxes = o.max_boxes;
   p.maximal_seconds = o.max_seconds;
+  p.solve_with_plan = !o.no_plan;
   p.interrupt = &interrupted;
   Progress_line line;
   if (!o.quiet && isatty(2)) p.progress = std::ref(line);
@@ -599,6 +601,7 @@ int solve(const RI::Scene& scene, const RI::Rigid_body_collection<Traits>& input
                   {"boxes", st.boxes}, {"krawczyk_tests", st.krawczyk_tests}, {"roots", st.roots},
                   {"duplicates_merged", st.duplicates}, {"spurious_rejected", st.spurious}, {"curve_boxes", st.curve_boxes},
                   {"placements_excluded", st.placements_excluded},
+                  {"planned_systems", st.planned_systems}, {"block_solves", st.block_solves},
                   {"coefficient_width", st.coefficient_width},
                   {"seconds", {{"analysis", analysis_seconds}, {"reduce", st.reduce_seconds}, {"solve", st.solve_seconds},
                                {"verify", st.verify_seconds}}}};
@@ -688,6 +691,9 @@ int solve(const RI::Scene& scene, const RI::Rigid_body_collection<Traits>& input
             << st.duplicates << " found twice, " << st.spurious << " rejected by the original system), " << st.excluded_at_once << " of "
             << st.chart_combinations << " chart combinations excluded at once"
             << (st.placements_excluded ? ", " + std::to_string(st.placements_excluded) + " combinations of placements excluded (shared points at distances that differ)" : std::string())
+            << (st.planned_systems ? ", " + std::to_string(st.planned_systems) + " systems solved along their solution plan (" +
+                                         std::to_string(st.block_solves) + " block solves)"
+                                   : std::string())
             << "; seconds: analysis " << analysis_seconds << ", reduce "
             << st.reduce_seconds << ", solve " << st.solve_seconds << ", verify " << st.verify_seconds << "\n";
   return signal_received && !r.complete() ? 128 + int(signal_received) : 0;  // (a signal after the last combination cut nothing)

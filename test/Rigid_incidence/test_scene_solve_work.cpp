@@ -10,14 +10,31 @@
 //   distances, are 2 blocks of 2 variables and 2 independent parts, and their configurations
 //   are the product of those of each pair solved alone; bar_end is a block of 3 and one of 1;
 // - the charts counted by hand: 2 per hinge, 4 per free rotation.
+// And the solve along the solution plan (Scene_solve_parameters::solve_with_plan, issue 28,
+// items 1 and 6), against the whole solve (the oracle) and planted configurations:
+// - two pairs of hinges: the same configurations block after block as whole, every system
+//   solved along its plan; tetra (one block): never;
+// - two stacked Stewart-Gough platforms (data/platforms2.json, scripts/make_scene_family.py
+//   platforms 2): 2 blocks of 6 variables where the whole system of 12 is beyond the dense
+//   arrays (the whole solve refuses it): complete, every configuration certified and holding
+//   in the scene, the planted one among them;
+// - the same with a time limit of 0.3 s or an interrupt already set: not complete, and what
+//   it holds is among the full answer.
 
 #include <CGAL/Gmpq.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Rigid_incidence.h>
 #include <CGAL/Rigid_incidence/IO/read_scene.h>
 
+#include <nlohmann/json.hpp>
+
+#include <atomic>
+#include <cmath>
 #include <fstream>
 #include <iostream>
+#include <array>
+#include <map>
+#include <set>
 #include <sstream>
 #include <string>
 
@@ -33,7 +50,7 @@ struct Outcome
   RI::Scene_solve_result result;
 };
 
-static Outcome solve(const RI::Scene& scene)
+static Outcome solve(const RI::Scene& scene, bool plan = true, double seconds = 0, const std::atomic<bool>* interrupt = nullptr)
 {
   Outcome o;
   RI::Rigid_body_collection<Traits> input = RI::make_collection<Traits>(scene);
@@ -43,6 +60,9 @@ static Outcome solve(const RI::Scene& scene)
   o.work = RI::scene_solve_work(c, t, wf);
   RI::Scene_solve_parameters p;
   p.maximal_coefficient_precision = 53;  // (one pass: a retry would solve some systems twice)
+  p.solve_with_plan = plan;
+  p.maximal_seconds = seconds;
+  p.interrupt = interrupt;
   if (RI::exact_coefficients(c, t)) o.result = RI::solve_scene<CGAL::Interval_nt<false>, CGAL::Gmpq>(input, c, t, wf, p);
   else o.result = RI::solve_scene<CGAL::Interval_nt<false>, CGAL::Interval_nt<false>>(input, c, t, wf, p);
   return o;
@@ -74,8 +94,112 @@ static void against_the_solve(const std::string& name, const Outcome& o)
         name << ": an independent part is one block or more");
 }
 
+// the largest coordinate difference between two configurations' points
+static double distance(const RI::Configuration& a, const RI::Configuration& b, const std::vector<std::string>& labels)
+{
+  double d = 0;
+  for (const auto& l : labels)
+    for (std::size_t k = 0; k < 3; ++k) d = (std::max)(d, std::abs(a.point(l)[k] - b.point(l)[k]));
+  return d;
+}
+
+static std::vector<std::string> point_labels(const RI::Scene& s)
+{
+  std::set<std::string> l;
+  for (const auto& b : s.bodies)
+    for (const auto& p : b.points) l.insert(p.label);
+  return std::vector<std::string>(l.begin(), l.end());
+}
+
+// is each configuration of `part` one of `full`'s?
+static bool among(const RI::Scene_solve_result& part, const RI::Scene_solve_result& full, const std::vector<std::string>& labels)
+{
+  for (const auto& x : part.configurations) {
+    bool found = false;
+    for (const auto& y : full.configurations) found = found || distance(x.configuration, y.configuration, labels) < 1e-7;
+    if (!found) return false;
+  }
+  return true;
+}
+
+static void along_the_plan()
+{
+  const std::string td = RIGID_INCIDENCE_TEST_DATA_DIR;
+  {
+    const RI::Scene scene = read(td + "/two_pairs_of_hinges.json");
+    const Outcome planned = solve(scene), whole = solve(scene, false);
+    const auto labels = point_labels(scene);
+    std::cout << "two parts along the plan: " << planned.result.configurations.size() << " configurations, "
+              << planned.result.statistics.planned_systems << " of " << planned.result.statistics.chart_combinations << " systems planned, "
+              << planned.result.statistics.block_solves << " block solves; whole: " << whole.result.configurations.size() << "\n";
+    CHECK(planned.result.complete() && whole.result.complete(), "two parts: complete both ways");
+    CHECK(planned.result.statistics.planned_systems == planned.result.statistics.chart_combinations &&
+              planned.result.statistics.planned_systems > 0 && whole.result.statistics.planned_systems == 0,
+          "two parts: every system solved along its plan (2 blocks), none with solve_with_plan = false");
+    CHECK(planned.result.configurations.size() == whole.result.configurations.size() && among(planned.result, whole.result, labels) &&
+              among(whole.result, planned.result, labels),
+          "two parts: the same configurations along the plan as whole");
+  }
+  {
+    const Outcome o = solve(read(std::string(RIGID_INCIDENCE_DATA_DIR) + "/tetra.json"));
+    CHECK(o.result.statistics.planned_systems == 0 && o.result.complete() && o.result.configurations.size() == 4,
+          "tetra: one block, solved whole");
+  }
+  const RI::Scene platforms = read(td + "/platforms2.json");
+  const auto labels = point_labels(platforms);
+  std::map<std::string, std::array<double, 3>> planted;
+  {
+    std::ifstream in(td + "/platforms2_planted.json");
+    const nlohmann::json j = nlohmann::json::parse(in);
+    for (const auto& e : j.at("points").items()) planted[e.key()] = {e.value()[0].get<double>(), e.value()[1].get<double>(), e.value()[2].get<double>()};
+  }
+  const Outcome full = solve(platforms);
+  {
+    const auto& r = full.result;
+    bool planted_found = false, certified = true, holds = true;
+    for (const auto& x : r.configurations) {
+      double d = 0;
+      for (const auto& p : planted)
+        for (std::size_t k = 0; k < 3; ++k) d = (std::max)(d, std::abs(x.configuration.point(p.first)[k] - p.second[k]));
+      planted_found = planted_found || d < 1e-6;
+      certified = certified && x.certified;
+      holds = holds && x.max_relative_residual < 1e-9;
+    }
+    std::cout << "two stacked platforms: " << RI::internal::describe_work(full.work) << "; " << r.configurations.size()
+              << " configurations, " << (r.complete() ? "complete" : "NOT complete") << ", " << r.statistics.planned_systems << " of "
+              << r.statistics.chart_combinations << " systems planned, " << r.statistics.block_solves << " block solves, "
+              << r.statistics.boxes << " boxes\n";
+    for (const auto& l : r.limits) std::cout << "  limit: " << l << "\n";
+    CHECK(full.work.block_sizes == (std::vector<std::size_t>{6, 6}), "two platforms: 2 blocks of 6 variables");
+    CHECK(r.complete() && certified && holds && planted_found,
+          "two platforms: complete (" << r.complete() << "), every configuration certified (" << certified << ") and holding ("
+                                      << holds << "), the planted one among them (" << planted_found << ")");
+    CHECK(r.statistics.planned_systems == r.statistics.chart_combinations, "two platforms: every system solved along its plan");
+  }
+  {
+    bool refused = false;
+    try {
+      solve(platforms, false);
+    } catch (const std::exception& e) {
+      refused = std::string(e.what()).find("dense") != std::string::npos;
+    }
+    CHECK(refused, "two platforms, whole: refused for its dense arrays (what the plan avoids)");
+  }
+  {
+    const Outcome cut = solve(platforms, true, 0.3);
+    std::cout << "two platforms in 0.3 s: " << cut.result.configurations.size() << " configurations, "
+              << (cut.result.complete() ? "complete" : "not complete") << "\n";
+    CHECK(!cut.result.complete() && !cut.result.limits.empty() && among(cut.result, full.result, labels),
+          "two platforms in 0.3 s: not complete, says why, holds only configurations of the full answer");
+    std::atomic<bool> stop{true};
+    const Outcome stopped = solve(platforms, true, 0, &stop);
+    CHECK(!stopped.result.complete() && among(stopped.result, full.result, labels), "two platforms interrupted: not complete");
+  }
+}
+
 int main()
 {
+  along_the_plan();
   const std::string d = RIGID_INCIDENCE_DATA_DIR;
   // the paper's scenes: 3 hinges (2 charts each), one block of 3 (their equations couple all)
   for (const char* f : {"tetra", "tetra_i", "quad", "quad_distinct", "pent", "flat_hinges"}) {

@@ -12,7 +12,9 @@
 //    or, where it runs out of boxes, a subset of them;
 //  - with a random affine inequality g >= 0 (no root on g = 0): exactly the planted roots with
 //    g > 0, with and without the plan;
-// and CGAL::Gmpfi as the interval type on a few systems; malformed input throws Input_error.
+// and CGAL::Gmpfi as the interval type on a few systems; the same systems with interval
+// coefficients (as solve_scene() gives them: a block with inputs once renumbered them away,
+// wrong roots); malformed input throws Input_error.
 // Usage: test_solve_with_plan [systems [seed]] (or RI_TEST_SYSTEMS=systems in the environment)
 
 #include "planted_systems.h"
@@ -27,6 +29,26 @@
 #include <string>
 
 using namespace planted_systems;
+
+typedef CGAL::Interval_nt<false> I;
+
+// `p` with each coefficient enclosed in a double interval
+static RI::Polynomial_system<I> with_interval_coefficients(const RI::Polynomial_system<Q>& p)
+{
+  RI::Polynomial_system<I> r;
+  r.variable_names = p.variable_names;
+  r.box = p.box;
+  r.labels = p.labels;
+  auto convert = [](const RI::Sparse_polynomial<Q>& f) {
+    RI::Sparse_polynomial<I> g(f.number_of_variables());
+    for (const auto& t : f.terms()) g.add_term(t.first, I(CGAL::to_interval(t.second)));
+    return g;
+  };
+  for (const auto& f : p.equations) r.equations.push_back(convert(f));
+  for (const auto& f : p.inequalities) r.inequalities.push_back(convert(f));
+  r.inequality_labels = p.inequality_labels;
+  return r;
+}
 
 // Every planted root of `p` strictly inside the box with g > 0 (g empty: no inequality).
 static std::vector<Point> expected_roots(const Planted& p, const Affine* g)
@@ -64,7 +86,8 @@ int main(int argc, char** argv)
   const std::uint64_t seed = argc > 2 ? std::strtoull(argv[2], nullptr, 10) : 20261123;
   std::cout << "test_solve_with_plan: seed " << seed << ", " << systems << " systems\n";
   Rng rng(seed);
-  std::size_t solved = 0, roots = 0, blocks = 0, plan_boxes = 0, plain_boxes = 0, plan_boxes_compared = 0, undecomposed_incomplete = 0, refinements = 0, refinements_failed = 0, kept = 0, gmpfi_runs = 0;
+  std::size_t solved = 0, roots = 0, blocks = 0, plan_boxes = 0, plain_boxes = 0, plan_boxes_compared = 0, undecomposed_incomplete = 0, refinements = 0, refinements_failed = 0, kept = 0, gmpfi_runs = 0,
+              interval_runs = 0;
   bool refusal_checked = false;
   for (int s = 0; s < systems; ++s) {
     // blocks of 1 to 3 variables, 2 to 6 variables in all, 1 to 3 factors per equation
@@ -97,6 +120,13 @@ int main(int argc, char** argv)
     CHECK(pr.complete(), name << ": the plan's solve is not complete");
     check_roots(pr.roots, all, name + " with the plan");
     plan_boxes += pr.boxes;
+    if (plan.blocks().size() > 1 && s % 3 == 0) {
+      const RI::Polynomial_system<I> ip = with_interval_coefficients(p.system);
+      auto ir = RI::solve_with_plan(ip, RI::Solution_plan(ip));
+      CHECK(ir.complete(), name << ": the plan's solve with interval coefficients is not complete");
+      check_roots(ir.roots, all, name + " with the plan and interval coefficients");
+      ++interval_runs;
+    }
     refinements += pr.refinements;
     refinements_failed += pr.refinements_failed;
     // the undecomposed solver (costly beyond 4 variables: every tenth system there)
@@ -168,6 +198,7 @@ int main(int argc, char** argv)
 #endif
   }
   CHECK(solved >= std::size_t(systems) / 2, "only " << solved << " systems were usable");
+  CHECK(interval_runs > 0 || systems < 20, "no system of several blocks solved with interval coefficients");
   CHECK(refinements_failed * 100 <= refinements, refinements_failed << " of " << refinements << " whole-system refinements failed");
 
   // malformed input
@@ -216,7 +247,8 @@ int main(int argc, char** argv)
   std::cout << solved << " systems, " << roots << " roots in the boxes, " << blocks << " blocks; boxes with the plan " << plan_boxes
             << " (" << plan_boxes_compared << " on the systems also solved undecomposed, which took " << plain_boxes
             << " and ran out of boxes on " << undecomposed_incomplete << "); " << refinements << " roots refined on the whole system ("
-            << refinements_failed << " failed); " << kept << " roots kept by the inequalities; " << gmpfi_runs << " Gmpfi runs\n";
+            << refinements_failed << " failed); " << kept << " roots kept by the inequalities; " << gmpfi_runs << " Gmpfi runs, "
+            << interval_runs << " with interval coefficients\n";
   std::cout << checks << " checks, " << failures << " failures\n";
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

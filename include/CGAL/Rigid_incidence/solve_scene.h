@@ -19,6 +19,7 @@
 #include <CGAL/Rigid_incidence/Solution_plan.h>
 #include <CGAL/Rigid_incidence/Subdivision_solver.h>
 #include <CGAL/Rigid_incidence/enclose_coordinates.h>
+#include <CGAL/Rigid_incidence/solve_with_plan.h>
 
 #include <boost/graph/adjacency_list.hpp>
 #include <boost/graph/connected_components.hpp>
@@ -109,6 +110,13 @@ struct Scene_solve_parameters
   /// computed again), where the scene allows it (quaternion charts, no free body); false: a
   /// new reduction for each (the tests' oracle).
   bool change_charts = true;
+  /// Solve a reduced system whose solution plan (`Solution_plan`) has more than one block
+  /// along it, with `solve_with_plan()`: the blocks one after the other, each root of a block
+  /// substituted, as its certified enclosure, into the blocks after it (two stacked platforms:
+  /// two blocks of 6 variables, where the whole system of 12 is beyond the dense arrays). A
+  /// plan whose solve ends with a diagnosis (a block not zero-dimensional) or throws is
+  /// dropped and the system solved whole. false: always whole (the tests' oracle).
+  bool solve_with_plan = true;
   /// Called after each combination of charts and placements is solved (empty: never), from
   /// the thread that called `solve_scene()`; the command-line tool prints it on a terminal.
   std::function<void(const Scene_solve_progress&)> progress;
@@ -203,6 +211,11 @@ struct Scene_solve_statistics
   /// the widest coefficient enclosure of the reduced systems solved, relative to the largest
   /// coefficient of its equation (0: exact coefficients)
   double coefficient_width = 0;
+  /// systems solved along their solution plan (more than one block;
+  /// `Scene_solve_parameters::solve_with_plan`)
+  std::size_t planned_systems = 0;
+  /// the block solves those took (a block once per combination of the roots before it)
+  std::size_t block_solves = 0;
   std::size_t curve_boxes = 0;             ///< boxes visited by the curve tracer, all systems
   double reduce_seconds = 0;               ///< building the reduced systems
   double solve_seconds = 0;                ///< the subdivision solver
@@ -646,6 +659,38 @@ bool vanishes_along(const Sparse_polynomial<NT>& f, const std::vector<std::vecto
     if (std::abs(value) > 1e-8 * (size + 1e-300)) return false;
   }
   return true;
+}
+
+// A solve along a solution plan as the solver's result for the whole system: its roots, and
+// its regions, those of a block with blocks after it named by their block (the box holds the
+// search box for the later blocks' variables: never taken for a possible multiple root)
+template <class IT>
+Solver_result<IT> solver_result_of_plan(const Plan_result<IT>& p, std::size_t blocks)
+{
+  Solver_result<IT> r;
+  for (const auto& x : p.roots) {
+    Solver_root<IT> y;
+    y.enclosure = x.enclosure;
+    y.approximation = x.approximation;
+    y.certified = x.certified;
+    y.on_boundary = x.on_boundary;
+    y.on_inequality_boundary = x.on_inequality_boundary;
+    r.roots.push_back(y);
+  }
+  for (const auto& u : p.unresolved) {
+    Solver_unresolved<IT> v;
+    v.kind = u.kind;
+    v.reason = u.block + 1 == blocks ? u.reason
+                                     : "block " + std::to_string(u.block + 1) + " of " + std::to_string(blocks) +
+                                           " of the solution plan (the blocks after it not solved there): " + u.reason;
+    v.box = u.box;
+    r.unresolved.push_back(v);
+  }
+  r.diagnosis = p.diagnosis;
+  r.statistics.boxes = p.boxes;
+  r.statistics.krawczyk_tests = p.krawczyk_tests;
+  r.statistics.seconds = p.seconds;
+  return r;
 }
 
 // A branch traced in one chart combination, as configurations.
@@ -1112,7 +1157,29 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
           const double left = (std::max)(parameters.maximal_seconds - since(started), 1e-3);
           sp.maximal_seconds = sp.maximal_seconds > 0 ? (std::min)(sp.maximal_seconds, left) : left;
         }
-        res = Subdivision_solver<IT>(sp).solve(sys);
+        bool planned = false;
+        if (parameters.solve_with_plan && sys.number_of_equations() == sys.number_of_variables()) {
+          const Solution_plan plan(sys);
+          if (plan.blocks().size() > 1 && plan.over_determined_equations().empty() && plan.under_determined_variables().empty() &&
+              plan.unattached_inequalities().empty()) {
+            try {
+              const Plan_result<IT> pr = solve_with_plan<IT>(sys, plan, sp);
+              if (pr.diagnosis.empty()) {
+                res = internal::solver_result_of_plan(pr, plan.blocks().size());
+                planned = true;
+                ++st.planned_systems;
+                st.block_solves += pr.block_solves;
+              } else {
+                // the whole system's solve diagnoses, and traces, what a block could not
+                st.boxes += pr.boxes;
+                st.krawczyk_tests += pr.krawczyk_tests;
+              }
+            } catch (const Input_error&) {
+              // (an equation vanishes once earlier roots are substituted: solved whole)
+            }
+          }
+        }
+        if (!planned) res = Subdivision_solver<IT>(sp).solve(sys);
       }
       double ts = since(t2);
       st.solve_seconds += ts;

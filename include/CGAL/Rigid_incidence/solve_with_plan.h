@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <stdexcept>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -64,7 +65,7 @@ struct Plan_result
   std::size_t boxes = 0;               ///< boxes over all block solves
   std::size_t krawczyk_tests = 0;      ///< Krawczyk tests over all block solves
   std::size_t refinements = 0;         ///< roots tightened on the whole system
-  std::size_t refinements_failed = 0;  ///< of those, the ones whose whole-system Krawczyk test failed (the blocks' enclosure is kept)
+  std::size_t refinements_failed = 0;  ///< of those, the ones whose whole-system Krawczyk test failed, or could not run (the whole system beyond the dense arrays); the blocks' enclosure is kept
   double seconds = 0;                  ///< wall-clock time
   /// every root certified and nothing unresolved
   bool complete() const
@@ -94,7 +95,9 @@ Sparse_polynomial<IT> restrict_polynomial(const Sparse_polynomial<NT>& f, const 
       if (t.first[j] == 0) continue;
       if (where[j] != std::size_t(-1)) e[where[j]] = t.first[j];
       else {
-        CGAL_assertion(known[j]);
+        // (a plan made for the system never leaves one unknown: a plain check, not an assertion
+        // compiled out of a release build)
+        if (!known[j]) throw std::logic_error("solve_with_plan: variable " + std::to_string(j) + " used before its block is solved");
         for (unsigned p = 0; p < t.first[j]; ++p) c = c * value[j];
       }
     }
@@ -113,10 +116,23 @@ template <class IT, class NT> struct Plan_run
   std::vector<IT> value;
   std::vector<char> known;
   std::vector<char> certified_so_far, boundary_so_far, ineq_boundary_so_far;
+  bool whole_too_large = false;  // refine() refused the whole system: not tried again
+
+  const std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
 
   Plan_run(const Polynomial_system<NT>& s, const Solution_plan& p, const Subdivision_solver_parameters& q)
       : sys(s), plan(p), P(q), value(s.number_of_variables()), known(s.number_of_variables(), 0)
   {
+  }
+
+  double elapsed() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); }
+  // why the blocks still to solve are not (the interrupt, or maximal_seconds for the whole
+  // plan, not for each block solve), or empty
+  std::string stop_reason() const
+  {
+    if (P.interrupt && P.interrupt->load(std::memory_order_relaxed)) return "interrupted";
+    if (P.maximal_seconds > 0 && elapsed() > P.maximal_seconds) return "time budget exhausted";
+    return std::string();
   }
 
   std::vector<IT> current_box(std::size_t b, const std::vector<IT>& local_box) const
@@ -128,22 +144,28 @@ template <class IT, class NT> struct Plan_run
     return box;
   }
 
-  template <class CT> Solver_result<IT> solve_block(const Plan_block& blk, bool last)
+  // `own`: no input enters the block, and its polynomials are renumbered with their own
+  // coefficients (CT = NT); otherwise the inputs are substituted (CT = IT). Chosen by `own`,
+  // not by the types: with interval coefficients NT is IT, and the inputs must still be
+  // substituted (renumbering alone dropped them: wrong roots).
+  template <class CT> Solver_result<IT> solve_block(const Plan_block& blk, bool last, bool own)
   {
+    auto restrict = [&](const Sparse_polynomial<NT>& f) -> Sparse_polynomial<CT> {
+      if constexpr (std::is_same<CT, NT>::value)
+        if (own) return restrict_exact(f, blk.variables);
+      if constexpr (std::is_same<CT, IT>::value) return restrict_polynomial<IT>(f, blk.variables, value, known);
+      else throw std::logic_error("solve_with_plan: a block with inputs solved with exact coefficients");
+    };
     Polynomial_system<CT> s;
     for (std::size_t j : blk.variables) {
       s.variable_names.push_back(j < sys.variable_names.size() ? sys.variable_names[j] : "x" + std::to_string(j));
       s.box.push_back(sys.box[j]);
     }
     for (std::size_t i : blk.equations) {
-      if constexpr (std::is_same<CT, NT>::value) s.equations.push_back(restrict_exact(sys.equations[i], blk.variables));
-      else s.equations.push_back(restrict_polynomial<IT>(sys.equations[i], blk.variables, value, known));
+      s.equations.push_back(restrict(sys.equations[i]));
       s.labels.push_back(i < sys.labels.size() ? sys.labels[i] : std::string());
     }
-    for (std::size_t q : blk.inequalities) {
-      if constexpr (std::is_same<CT, NT>::value) s.inequalities.push_back(restrict_exact(sys.inequalities[q], blk.variables));
-      else s.inequalities.push_back(restrict_polynomial<IT>(sys.inequalities[q], blk.variables, value, known));
-    }
+    for (std::size_t q : blk.inequalities) s.inequalities.push_back(restrict(sys.inequalities[q]));
     for (const auto& f : s.equations)
       if (f.is_zero())
         throw Input_error("solve_with_plan: an equation of block " + std::to_string(&blk - &plan.blocks()[0]) +
@@ -152,6 +174,7 @@ template <class IT, class NT> struct Plan_run
     // the roots of a block with blocks after it become their coefficients: tighter enclosures
     // keep those coefficients narrow
     if (!last) q.tolerance = P.tolerance * 1e-3;
+    if (P.maximal_seconds > 0) q.maximal_seconds = (std::max)(P.maximal_seconds - elapsed(), 1e-3);
     return Subdivision_solver<IT>(q).solve(s);
   }
   // the same polynomial renumbered to the block's variables (exact: the block has no input)
@@ -171,20 +194,39 @@ template <class IT, class NT> struct Plan_run
     if (b == plan.blocks().size()) {
       Plan_root<IT> r;
       r.enclosure = value;
-      if (certified && plan.blocks().size() > 1) {
+      if (certified && plan.blocks().size() > 1 && !whole_too_large) {
         // the blocks' enclosures carry the widths of the inputs through the chain (interval
         // coefficients evaluated term by term): the Krawczyk test on the whole system, from
         // their product, tightens the root to the tolerance (the root it proves unique in a
         // box holding the product is the one the blocks proved there)
         ++result.refinements;
-        if (auto t = Subdivision_solver<IT>(P).refine(sys, value)) r.enclosure = t->enclosure;
-        else ++result.refinements_failed;
+        try {
+          if (auto t = Subdivision_solver<IT>(P).refine(sys, value)) r.enclosure = t->enclosure;
+          else ++result.refinements_failed;
+        } catch (const Input_error&) {
+          // the whole system is beyond the solver's dense arrays (what the plan is for: two
+          // stacked platforms): the blocks' certified enclosure stands, for every root
+          ++result.refinements_failed;
+          whole_too_large = true;
+        }
       }
       for (const IT& v : value) r.approximation.push_back(0.5 * O::lower_double(v) + 0.5 * O::upper_double(v));
       r.certified = certified;
       r.on_boundary = boundary;
       r.on_inequality_boundary = ineq_boundary;
       result.roots.push_back(r);
+      return;
+    }
+    const std::string stop = stop_reason();
+    if (!stop.empty()) {
+      // this block, for these values of the blocks before it, is left pending (with the
+      // blocks after it)
+      Plan_unresolved<IT> v;
+      v.block = b;
+      v.kind = Box_class::PENDING;
+      v.reason = stop;
+      v.box = current_box(b, std::vector<IT>());
+      result.unresolved.push_back(v);
       return;
     }
     const Plan_block& blk = plan.blocks()[b];
@@ -196,7 +238,7 @@ template <class IT, class NT> struct Plan_run
       for (std::size_t j : sys.equations[i].variables()) own = own && std::binary_search(blk.variables.begin(), blk.variables.end(), j);
     for (std::size_t q : blk.inequalities)
       for (std::size_t j : sys.inequalities[q].variables()) own = own && std::binary_search(blk.variables.begin(), blk.variables.end(), j);
-    Solver_result<IT> res = own ? solve_block<NT>(blk, last) : solve_block<IT>(blk, last);
+    Solver_result<IT> res = own ? solve_block<NT>(blk, last, true) : solve_block<IT>(blk, last, false);
     ++result.block_solves;
     result.boxes += res.statistics.boxes;
     result.krawczyk_tests += res.statistics.krawczyk_tests;

@@ -354,6 +354,24 @@ if(TARGET rigid_incidence)
                      "-DCHECK_ARGS=STDOUT_FILE|${_ri_d}/stewart_gough40.json|--solutions|40|--certified|40|--complete|true"
                      -P ${_ri_cli_script})
   endif()
+  # two stacked Stewart-Gough platforms (issue 28, items 1 and 6): solved along the reduced
+  # system's solution plan, 2 blocks of 6 variables, complete and certified; --no-plan solves
+  # the whole system of 12, which the dense arrays refuse (the error says so, exit status 2)
+  set(_ri_platforms ${CMAKE_CURRENT_LIST_DIR}/../data/platforms2.json)
+  add_test(NAME cli_solve_platforms2
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${_ri_platforms}|--json" -DEXPECT_RC=0
+                   "-DEXPECT_STDOUT=\"planned_systems\": 16"
+                   "-DSTDOUT_FILE=${CMAKE_CURRENT_BINARY_DIR}/cli_solve_platforms2.json"
+                   "-DCHECK_PROGRAM=$<TARGET_FILE:solve_json_check>"
+                   "-DCHECK_ARGS=STDOUT_FILE|${_ri_platforms}|--complete|true"
+                   -P ${_ri_cli_script})
+  add_test(NAME cli_solve_platforms2_no_plan
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${_ri_platforms}|--no-plan" -DEXPECT_RC=2
+                   "-DEXPECT_STDERR=rigid_incidence: error: &&dense tensor-product arrays&&maximal_coefficients"
+                   -P ${_ri_cli_script})
+  add_test(NAME cli_usage_no_plan_analyze
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=analyze|${_ri_platforms}|--no-plan" -DEXPECT_RC=1
+                   "-DEXPECT_STDERR=--no-plan is an option of solve and solve-system" -P ${_ri_cli_script})
   # a time limit for the whole solve, and the interrupt (issue 28, item 5): a scene whose solve
   # runs for 70 s (a chain of 10 tetrahedra) stops, and its partial answer is valid JSON whose solutions hold
   # in the scene and which says it is not complete (exit status 0 at the time limit, 130 or
