@@ -601,7 +601,7 @@ int solve(const RI::Scene& scene, const RI::Rigid_body_collection<Traits>& input
                   {"boxes", st.boxes}, {"krawczyk_tests", st.krawczyk_tests}, {"roots", st.roots},
                   {"duplicates_merged", st.duplicates}, {"spurious_rejected", st.spurious}, {"curve_boxes", st.curve_boxes},
                   {"placements_excluded", st.placements_excluded},
-                  {"planned_systems", st.planned_systems}, {"block_solves", st.block_solves},
+                  {"planned_systems", st.planned_systems}, {"block_solves", st.block_solves}, {"excluded_by_plan", st.excluded_by_plan},
                   {"coefficient_width", st.coefficient_width},
                   {"seconds", {{"analysis", analysis_seconds}, {"reduce", st.reduce_seconds}, {"solve", st.solve_seconds},
                                {"verify", st.verify_seconds}}}};
@@ -692,7 +692,8 @@ int solve(const RI::Scene& scene, const RI::Rigid_body_collection<Traits>& input
             << st.chart_combinations << " chart combinations excluded at once"
             << (st.placements_excluded ? ", " + std::to_string(st.placements_excluded) + " combinations of placements excluded (shared points at distances that differ)" : std::string())
             << (st.planned_systems ? ", " + std::to_string(st.planned_systems) + " systems solved along their solution plan (" +
-                                         std::to_string(st.block_solves) + " block solves)"
+                                         std::to_string(st.block_solves) + " block solves, " + std::to_string(st.excluded_by_plan) +
+                                         " combinations excluded by a block without roots)"
                                    : std::string())
             << "; seconds: analysis " << analysis_seconds << ", reduce "
             << st.reduce_seconds << ", solve " << st.solve_seconds << ", verify " << st.verify_seconds << "\n";

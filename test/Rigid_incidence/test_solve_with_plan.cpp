@@ -14,7 +14,11 @@
 //    g > 0, with and without the plan;
 // and CGAL::Gmpfi as the interval type on a few systems; the same systems with interval
 // coefficients (as solve_scene() gives them: a block with inputs once renumbered them away,
-// wrong roots); malformed input throws Input_error.
+// wrong roots); solve_with_plan_over_charts() with each variable of a system of several blocks
+// its own chart group, chart 0 its box's lower half and chart 1 its upper half: for every
+// assignment of charts, what it found is what solve_with_plan() finds on that assignment's
+// system (the oracle), with fewer block solves, and over all assignments every planted root;
+// malformed input throws Input_error.
 // Usage: test_solve_with_plan [systems [seed]] (or RI_TEST_SYSTEMS=systems in the environment)
 
 #include "planted_systems.h"
@@ -24,7 +28,9 @@
 #include <CGAL/Rigid_incidence/Subdivision_solver.h>
 #include <CGAL/Rigid_incidence/solve_with_plan.h>
 
+#include <algorithm>
 #include <cstdlib>
+#include <functional>
 #include <iostream>
 #include <string>
 
@@ -87,7 +93,7 @@ int main(int argc, char** argv)
   std::cout << "test_solve_with_plan: seed " << seed << ", " << systems << " systems\n";
   Rng rng(seed);
   std::size_t solved = 0, roots = 0, blocks = 0, plan_boxes = 0, plain_boxes = 0, plan_boxes_compared = 0, undecomposed_incomplete = 0, refinements = 0, refinements_failed = 0, kept = 0, gmpfi_runs = 0,
-              interval_runs = 0;
+              interval_runs = 0, chart_runs = 0, chart_block_solves = 0, chart_separate_solves = 0;
   bool refusal_checked = false;
   for (int s = 0; s < systems; ++s) {
     // blocks of 1 to 3 variables, 2 to 6 variables in all, 1 to 3 factors per equation
@@ -126,6 +132,51 @@ int main(int argc, char** argv)
       CHECK(ir.complete(), name << ": the plan's solve with interval coefficients is not complete");
       check_roots(ir.roots, all, name + " with the plan and interval coefficients");
       ++interval_runs;
+    }
+    if (plan.blocks().size() > 1 && n <= 5 && s % 2 == 0) {
+      // halves of the box as charts: 2^n assignments, each solved whole along the plan too
+      auto make = [&](const std::vector<int>& charts) {
+        RI::Polynomial_system<Q> h = p.system;
+        for (std::size_t j = 0; j < n; ++j) {
+          const double mid = 0.5 * h.box[j].first + 0.5 * h.box[j].second;
+          h.box[j] = charts[j] == 0 ? std::make_pair(h.box[j].first, mid) : std::make_pair(mid, h.box[j].second);
+        }
+        return h;
+      };
+      std::vector<std::size_t> group(n);
+      for (std::size_t j = 0; j < n; ++j) group[j] = j;
+      const std::function<RI::Polynomial_system<Q>(const std::vector<int>&)> f = make;
+      const auto oc = RI::solve_with_plan_over_charts<CGAL::Interval_nt<false>, Q>(plan, group, std::vector<int>(n, 2), f);
+      std::vector<int> charts(n, 0);
+      std::size_t separate_solves = 0, found_roots = 0;
+      std::size_t next = 0;  // into oc.found, in lexicographic order of the charts
+      std::vector<std::vector<int>> order;
+      for (;;) {
+        order.push_back(charts);
+        std::size_t k = n;
+        while (k > 0 && ++charts[k - 1] == 2) charts[--k] = 0;
+        if (k == 0) break;
+      }
+      std::sort(order.begin(), order.end());
+      for (const auto& a : order) {
+        const auto alone = RI::solve_with_plan(make(a), plan);
+        separate_solves += alone.block_solves;
+        const RI::Plan_result<CGAL::Interval_nt<false>>* mine = nullptr;
+        if (next < oc.found.size() && oc.found[next].charts == a) mine = &oc.found[next++].result;
+        const std::size_t got = mine ? mine->roots.size() : 0;
+        CHECK(got == alone.roots.size(), name << ": over charts, " << got << " roots in one assignment, alone " << alone.roots.size());
+        CHECK((mine ? mine->unresolved.size() : 0) == alone.unresolved.size(), name << ": over charts, regions differ from alone");
+        for (std::size_t i = 0; mine && i < got && i < alone.roots.size(); ++i)
+          for (std::size_t j = 0; j < n; ++j)
+            CHECK(std::abs(mine->roots[i].approximation[j] - alone.roots[i].approximation[j]) < 1e-8, name << ": over charts, another root");
+        found_roots += got;
+      }
+      CHECK(next == oc.found.size(), name << ": over charts, an assignment found twice or out of order");
+      CHECK(oc.totals.block_solves <= separate_solves, name << ": over charts, " << oc.totals.block_solves << " block solves, alone " << separate_solves);
+      CHECK(found_roots >= all.size(), name << ": over charts, " << found_roots << " roots for " << all.size() << " planted");
+      chart_block_solves += oc.totals.block_solves;
+      chart_separate_solves += separate_solves;
+      ++chart_runs;
     }
     refinements += pr.refinements;
     refinements_failed += pr.refinements_failed;
@@ -199,6 +250,8 @@ int main(int argc, char** argv)
   }
   CHECK(solved >= std::size_t(systems) / 2, "only " << solved << " systems were usable");
   CHECK(interval_runs > 0 || systems < 20, "no system of several blocks solved with interval coefficients");
+  CHECK(chart_runs > 0 || systems < 20, "no system solved over charts");
+  CHECK(chart_block_solves < chart_separate_solves || systems < 20, "over charts: no block solve saved");
   CHECK(refinements_failed * 100 <= refinements, refinements_failed << " of " << refinements << " whole-system refinements failed");
 
   // malformed input
@@ -248,7 +301,8 @@ int main(int argc, char** argv)
             << " (" << plan_boxes_compared << " on the systems also solved undecomposed, which took " << plain_boxes
             << " and ran out of boxes on " << undecomposed_incomplete << "); " << refinements << " roots refined on the whole system ("
             << refinements_failed << " failed); " << kept << " roots kept by the inequalities; " << gmpfi_runs << " Gmpfi runs, "
-            << interval_runs << " with interval coefficients\n";
+            << interval_runs << " with interval coefficients; " << chart_runs << " over charts (box halves): " << chart_block_solves
+            << " block solves, " << chart_separate_solves << " for each assignment alone\n";
   std::cout << checks << " checks, " << failures << " failures\n";
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

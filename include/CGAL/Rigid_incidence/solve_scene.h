@@ -24,6 +24,8 @@
 #include <boost/graph/adjacency_list.hpp>
 #include <boost/graph/connected_components.hpp>
 
+#include <iterator>
+
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -117,6 +119,12 @@ struct Scene_solve_parameters
   /// plan whose solve ends with a diagnosis (a block not zero-dimensional) or throws is
   /// dropped and the system solved whole. false: always whole (the tests' oracle).
   bool solve_with_plan = true;
+  /// With `solve_with_plan`: the plan's blocks choose the charts of their own tree edges
+  /// (`solve_with_plan_over_charts()`: a block is solved once per chart of its own edges and
+  /// root of the blocks before it, not once per combination of every edge's charts), where the
+  /// reduced system is square with more than one block, in a first pass. false: each chart
+  /// combination solved along its plan alone (the tests' oracle).
+  bool plan_over_charts = true;
   /// Called after each combination of charts and placements is solved (empty: never), from
   /// the thread that called `solve_scene()`; the command-line tool prints it on a terminal.
   std::function<void(const Scene_solve_progress&)> progress;
@@ -214,8 +222,12 @@ struct Scene_solve_statistics
   /// systems solved along their solution plan (more than one block;
   /// `Scene_solve_parameters::solve_with_plan`)
   std::size_t planned_systems = 0;
-  /// the block solves those took (a block once per combination of the roots before it)
+  /// the block solves those took (a block once per combination of the roots before it, and
+  /// per chart of its own hinges)
   std::size_t block_solves = 0;
+  /// chart combinations never built: solved along the plan over the charts
+  /// (`solve_with_plan_over_charts()`), a block before their last had no root in its charts
+  std::size_t excluded_by_plan = 0;
   std::size_t curve_boxes = 0;             ///< boxes visited by the curve tracer, all systems
   double reduce_seconds = 0;               ///< building the reduced systems
   double solve_seconds = 0;                ///< the subdivision solver
@@ -1115,21 +1127,11 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
       if (!retry) { ++st.placements_excluded; done += per_placement; }
       continue;
     }
-    std::vector<int> charts(radix_c.size(), 0);
     // the system of chart 0 of this placement combination, which the others are made from
     std::optional<Reduced_system<Traits, NT>> base;
     bool base_tried = !parameters.change_charts;
-    do {
-      if (retry && !retry->only.count(Scene_combination(placements, charts))) continue;
-      if ((stopped = stop_reason())) break;
-      auto t1 = Clock::now();
-      if (!base_tried) {
-        base_tried = true;
-        base.emplace(c, tree, selection, std::vector<int>(radix_c.size(), 0), Rotation_form::QUATERNION_CHARTS, placements);
-        if (!base->changes_charts()) base.reset();
-      }
-      Reduced_system<Traits, NT> r = base ? Reduced_system<Traits, NT>(*base, charts)
-                                                : Reduced_system<Traits, NT>(c, tree, selection, charts, Rotation_form::QUATERNION_CHARTS, placements);
+    // a reduced system with the orientation inequalities
+    auto system_of = [&](const Reduced_system<Traits, NT>& r) {
       Polynomial_system<NT> sys = r.system();
       for (std::size_t q = 0; q < orientation.size(); ++q) {
         auto g = r.orientation_numerator(orientation[q]);
@@ -1137,59 +1139,13 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
         sys.inequality_labels.push_back("orientation " + parameters.inequalities[q].points[0] + " " + parameters.inequalities[q].points[1] +
                                         " " + parameters.inequalities[q].points[2] + " " + parameters.inequalities[q].points[3]);
       }
-      st.reduce_seconds += since(t1);
       if constexpr (!std::is_same<NT, CGAL::Gmpq>::value) st.coefficient_width = (std::max)(st.coefficient_width, internal::coefficient_width(sys));
-      auto t2 = Clock::now();
-      Solver_result<IT> res;
-      if (one_dof) {
-        // traced below
-      } else if (sys.number_of_variables() == 0) {
-        // one body, or bodies fixed by the placements alone: the configuration is the
-        // placement itself (each placement variant is one)
-        Solver_root<IT> root;
-        root.certified = true;
-        res.roots.push_back(root);
-      } else {
-        // what is left of the whole solve's time, and its interrupt, bound this solve too
-        Subdivision_solver_parameters sp = parameters.solver;
-        if (!sp.interrupt) sp.interrupt = parameters.interrupt;
-        if (parameters.maximal_seconds > 0) {
-          const double left = (std::max)(parameters.maximal_seconds - since(started), 1e-3);
-          sp.maximal_seconds = sp.maximal_seconds > 0 ? (std::min)(sp.maximal_seconds, left) : left;
-        }
-        bool planned = false;
-        if (parameters.solve_with_plan && sys.number_of_equations() == sys.number_of_variables()) {
-          const Solution_plan plan(sys);
-          if (plan.blocks().size() > 1 && plan.over_determined_equations().empty() && plan.under_determined_variables().empty() &&
-              plan.unattached_inequalities().empty()) {
-            try {
-              const Plan_result<IT> pr = solve_with_plan<IT>(sys, plan, sp);
-              if (pr.diagnosis.empty()) {
-                res = internal::solver_result_of_plan(pr, plan.blocks().size());
-                planned = true;
-                ++st.planned_systems;
-                st.block_solves += pr.block_solves;
-              } else {
-                // the whole system's solve diagnoses, and traces, what a block could not
-                st.boxes += pr.boxes;
-                st.krawczyk_tests += pr.krawczyk_tests;
-              }
-            } catch (const Input_error&) {
-              // (an equation vanishes once earlier roots are substituted: solved whole)
-            }
-          }
-        }
-        if (!planned) res = Subdivision_solver<IT>(sp).solve(sys);
-      }
-      double ts = since(t2);
-      st.solve_seconds += ts;
-      ++st.chart_combinations;
-      st.boxes += res.statistics.boxes;
-      st.krawczyk_tests += res.statistics.krawczyk_tests;
-      if (res.statistics.boxes == 1 && res.roots.empty() && res.unresolved.empty()) {
-        ++st.excluded_at_once;
-        st.excluded_at_once_seconds += ts;
-      }
+      return sys;
+    };
+    // what the solve, or the tracer, of one chart combination found: configurations, curves,
+    // regions
+    auto process = [&](const std::vector<int>& charts, const Reduced_system<Traits, NT>& r, const Polynomial_system<NT>& sys,
+                       Solver_result<IT>& res) {
       if (positive.empty() && !res.diagnosis.empty()) {
         // say how far precision is ruled out as the cause: the widest coefficient enclosure
         // of the system, relative to its equation's largest coefficient (0: exact)
@@ -1201,7 +1157,6 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
         for (const auto& pr : out.placements) bits += (bits.empty() ? " (placements: " : ", ") + std::to_string(pr.precision) + " bits for '" + pr.body + "'";
         if (!bits.empty()) positive += bits + ")";
       }
-      auto t3 = Clock::now();
       auto unresolved = [&](Box_class kind, const std::string& reason, const std::vector<std::pair<double, double>>& box, std::size_t boxes,
                             const Configuration& at) {
         Scene_unresolved x;
@@ -1435,6 +1390,180 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
         }
       }
       add_regions(regions_left);
+    };
+    // Along the solution plan over the charts (solve_with_plan_over_charts()): each block
+    // chooses the charts of its own tree edges (hinges and free rotations), so a block is not
+    // solved again for each chart of the edges after it, and the chart combinations under a
+    // block without roots are never built. For square systems of more than one block, in a
+    // first pass (not a retry at a higher precision, which solves chosen combinations only).
+    if (!retry && !one_dof && parameters.solve_with_plan && parameters.plan_over_charts && per_placement > 1) {
+      if ((stopped = stop_reason())) break;
+      auto t1 = Clock::now();
+      std::optional<Reduced_system<Traits, NT>> zero;
+      zero.emplace(c, tree, selection, std::vector<int>(radix_c.size(), 0), Rotation_form::QUATERNION_CHARTS, placements);
+      // the others by a change of chart of this one where it allows (hinges), else built
+      const bool changes = parameters.change_charts && zero->changes_charts();
+      st.reduce_seconds += since(t1);
+      if (zero->number_of_variables() > 0 && zero->number_of_equations() == zero->number_of_variables()) {
+        auto t2 = Clock::now();
+        auto build = [&](const std::vector<int>& ch) {
+          return changes ? Reduced_system<Traits, NT>(*zero, ch)
+                         : Reduced_system<Traits, NT>(c, tree, selection, ch, Rotation_form::QUATERNION_CHARTS, placements);
+        };
+        // the variables an equation involves in any chart: the union over the systems with
+        // every edge at chart j (a chart moves the exponents of its edge's variables only;
+        // the plan's solve checks each system it builds against it)
+        const Polynomial_system<NT> s0 = system_of(*zero);
+        // (the union can only merge blocks: one block in chart 0 is one block)
+        if (Solution_plan(s0).blocks().size() > 1) {
+          std::vector<std::vector<std::size_t>> eqv(s0.equations.size()), inv(s0.inequalities.size());
+          auto unite = [](std::vector<std::vector<std::size_t>>& u, const std::vector<Sparse_polynomial<NT>>& a) {
+            for (std::size_t i = 0; i < a.size() && i < u.size(); ++i) {
+              std::vector<std::size_t> x = a[i].variables(), y;
+              std::set_union(x.begin(), x.end(), u[i].begin(), u[i].end(), std::back_inserter(y));
+              u[i].swap(y);
+            }
+          };
+          unite(eqv, s0.equations);
+          unite(inv, s0.inequalities);
+          const int most = radix_c.empty() ? 1 : *std::max_element(radix_c.begin(), radix_c.end());
+          for (int j = 1; j < most; ++j) {
+            std::vector<int> ch(radix_c.size());
+            for (std::size_t k = 0; k < ch.size(); ++k) ch[k] = (std::min)(j, radix_c[k] - 1);
+            const Polynomial_system<NT> sj = system_of(build(ch));
+            unite(eqv, sj.equations);
+            unite(inv, sj.inequalities);
+          }
+          const Solution_plan plan(s0.number_of_variables(), eqv, inv);
+          if (plan.blocks().size() > 1 && plan.structure() == Solution_plan::WELL_CONSTRAINED && plan.unattached_inequalities().empty()) {
+            std::vector<std::size_t> group(s0.number_of_variables(), std::size_t(-1));
+            const auto& edges = zero->parametrization().edges();
+            for (std::size_t k = 0; k < edges.size(); ++k) {
+              for (std::size_t v : edges[k].rotation) group[v] = k;
+              for (std::size_t v : edges[k].translation) group[v] = k;
+            }
+            Subdivision_solver_parameters sp = parameters.solver;
+            if (!sp.interrupt) sp.interrupt = parameters.interrupt;
+            if (parameters.maximal_seconds > 0) {
+              const double left = (std::max)(parameters.maximal_seconds - since(started), 1e-3);
+              sp.maximal_seconds = sp.maximal_seconds > 0 ? (std::min)(sp.maximal_seconds, left) : left;
+            }
+            const std::function<Polynomial_system<NT>(const std::vector<int>&)> make = [&](const std::vector<int>& ch) {
+              return system_of(build(ch));
+            };
+            std::optional<Plan_charts_result<IT>> pc;
+            try {
+              pc = solve_with_plan_over_charts<IT, NT>(plan, group, radix_c, make, sp);
+            } catch (const Input_error&) {
+              // an equation vanishes once earlier roots are substituted, or a chart changed an
+              // earlier block's equations: each combination alone
+            }
+            st.solve_seconds += since(t2);
+            if (pc) {
+              st.boxes += pc->totals.boxes;
+              st.krawczyk_tests += pc->totals.krawczyk_tests;
+            }
+            // a region a block before the last left undecided stands for every chart of the
+            // edges after it, but a retry at a higher precision solves the combinations named
+            // by its regions only: then each combination alone, with regions of its own
+            bool early_region = false;
+            if (pc)
+              for (const auto& f : pc->found)
+                for (const auto& u : f.result.unresolved)
+                  early_region = early_region || (u.kind == Box_class::UNKNOWN && u.block + 1 < plan.blocks().size());
+            if (pc && pc->totals.diagnosis.empty() && !early_region) {
+              st.chart_combinations += per_placement;
+              st.planned_systems += per_placement;
+              st.block_solves += pc->totals.block_solves;
+              st.excluded_by_plan += per_placement - pc->found.size();
+              auto t3 = Clock::now();
+              for (auto& f : pc->found) {
+                const Reduced_system<Traits, NT> r = build(f.charts);
+                const Polynomial_system<NT> sys = system_of(r);
+                Solver_result<IT> res = internal::solver_result_of_plan(f.result, plan.blocks().size());
+                process(f.charts, r, sys, res);
+              }
+              st.verify_seconds += since(t3);
+              done += per_placement;
+              report();
+              continue;
+            }
+            // a block not zero-dimensional, or an early region: each combination alone, whole
+            // where the plan diagnoses (the whole solve diagnoses, and traces, what a block could not)
+          }
+        }
+      }
+      // each combination alone from here: chart 0's system is the base of the others
+      base_tried = true;
+      if (changes) base.emplace(std::move(*zero));
+    }
+    std::vector<int> charts(radix_c.size(), 0);
+    do {
+      if (retry && !retry->only.count(Scene_combination(placements, charts))) continue;
+      if ((stopped = stop_reason())) break;
+      auto t1 = Clock::now();
+      if (!base_tried) {
+        base_tried = true;
+        base.emplace(c, tree, selection, std::vector<int>(radix_c.size(), 0), Rotation_form::QUATERNION_CHARTS, placements);
+        if (!base->changes_charts()) base.reset();
+      }
+      Reduced_system<Traits, NT> r = base ? Reduced_system<Traits, NT>(*base, charts)
+                                                : Reduced_system<Traits, NT>(c, tree, selection, charts, Rotation_form::QUATERNION_CHARTS, placements);
+      Polynomial_system<NT> sys = system_of(r);
+      st.reduce_seconds += since(t1);
+      auto t2 = Clock::now();
+      Solver_result<IT> res;
+      if (one_dof) {
+        // traced below
+      } else if (sys.number_of_variables() == 0) {
+        // one body, or bodies fixed by the placements alone: the configuration is the
+        // placement itself (each placement variant is one)
+        Solver_root<IT> root;
+        root.certified = true;
+        res.roots.push_back(root);
+      } else {
+        // what is left of the whole solve's time, and its interrupt, bound this solve too
+        Subdivision_solver_parameters sp = parameters.solver;
+        if (!sp.interrupt) sp.interrupt = parameters.interrupt;
+        if (parameters.maximal_seconds > 0) {
+          const double left = (std::max)(parameters.maximal_seconds - since(started), 1e-3);
+          sp.maximal_seconds = sp.maximal_seconds > 0 ? (std::min)(sp.maximal_seconds, left) : left;
+        }
+        bool planned = false;
+        if (parameters.solve_with_plan && sys.number_of_equations() == sys.number_of_variables()) {
+          const Solution_plan plan(sys);
+          if (plan.blocks().size() > 1 && plan.over_determined_equations().empty() && plan.under_determined_variables().empty() &&
+              plan.unattached_inequalities().empty()) {
+            try {
+              const Plan_result<IT> pr = solve_with_plan<IT>(sys, plan, sp);
+              if (pr.diagnosis.empty()) {
+                res = internal::solver_result_of_plan(pr, plan.blocks().size());
+                planned = true;
+                ++st.planned_systems;
+                st.block_solves += pr.block_solves;
+              } else {
+                // the whole system's solve diagnoses, and traces, what a block could not
+                st.boxes += pr.boxes;
+                st.krawczyk_tests += pr.krawczyk_tests;
+              }
+            } catch (const Input_error&) {
+              // (an equation vanishes once earlier roots are substituted: solved whole)
+            }
+          }
+        }
+        if (!planned) res = Subdivision_solver<IT>(sp).solve(sys);
+      }
+      double ts = since(t2);
+      st.solve_seconds += ts;
+      ++st.chart_combinations;
+      st.boxes += res.statistics.boxes;
+      st.krawczyk_tests += res.statistics.krawczyk_tests;
+      if (res.statistics.boxes == 1 && res.roots.empty() && res.unresolved.empty()) {
+        ++st.excluded_at_once;
+        st.excluded_at_once_seconds += ts;
+      }
+      auto t3 = Clock::now();
+      process(charts, r, sys, res);
       st.verify_seconds += since(t3);
       ++done;
       report();

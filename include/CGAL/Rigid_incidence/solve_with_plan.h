@@ -17,6 +17,9 @@
 
 #include <algorithm>
 #include <chrono>
+#include <functional>
+#include <map>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -65,7 +68,11 @@ struct Plan_result
   std::size_t boxes = 0;               ///< boxes over all block solves
   std::size_t krawczyk_tests = 0;      ///< Krawczyk tests over all block solves
   std::size_t refinements = 0;         ///< roots tightened on the whole system
-  std::size_t refinements_failed = 0;  ///< of those, the ones whose whole-system Krawczyk test failed, or could not run (the whole system beyond the dense arrays); the blocks' enclosure is kept
+  /// of those, the ones tightened block after block instead (the whole system's Krawczyk test
+  /// failed, or could not run: the whole system beyond the dense arrays), each block's test with
+  /// the inputs the blocks before it tightened
+  std::size_t refinements_by_blocks = 0;
+  std::size_t refinements_failed = 0;  ///< of those, the ones neither way tightened (the blocks' certified enclosure is kept)
   double seconds = 0;                  ///< wall-clock time
   /// every root certified and nothing unresolved
   bool complete() const
@@ -106,13 +113,43 @@ Sparse_polynomial<IT> restrict_polynomial(const Sparse_polynomial<NT>& f, const 
   return r;
 }
 
+// f and g term by term, coefficients bound for bound (not as numbers: an interval is only
+// the same interval)
+template <class NT>
+bool identical_polynomials(const Sparse_polynomial<NT>& f, const Sparse_polynomial<NT>& g)
+{
+  if (f.number_of_variables() != g.number_of_variables() || f.terms().size() != g.terms().size()) return false;
+  auto i = f.terms().begin();
+  for (auto j = g.terms().begin(); j != g.terms().end(); ++i, ++j) {
+    if (i->first != j->first) return false;
+    if constexpr (std::is_same<NT, CGAL::Gmpq>::value) {
+      if (i->second != j->second) return false;
+    } else {
+      typedef Interval_ops<NT> O;
+      if (!(O::lower(i->second) == O::lower(j->second)) || !(O::upper(i->second) == O::upper(j->second))) return false;
+    }
+  }
+  return true;
+}
+
 template <class IT, class NT> struct Plan_run
 {
   typedef Interval_ops<IT> O;
-  const Polynomial_system<NT>& sys;
+  const Polynomial_system<NT>* sys;  // the system of the current charts
   const Solution_plan& plan;
   const Subdivision_solver_parameters& P;
-  Plan_result<IT> result;
+  Plan_result<IT> result;  // the roots and regions (with charts: the totals only)
+  // With charts (solve_with_plan_over_charts()): per variable its chart group (npos: one
+  // chart), per group its number of charts, the system of an assignment of charts; the
+  // current assignment (groups no block has reached yet at chart 0), and what each full
+  // assignment found.
+  const std::vector<std::size_t>* group = nullptr;
+  const std::vector<int>* radix = nullptr;
+  std::function<Polynomial_system<NT>(const std::vector<int>&)> make_system;
+  std::vector<int> charts;
+  std::vector<char> assigned;
+  std::map<std::vector<int>, Plan_result<IT>> by_charts;
+  Plan_result<IT>& target() { return group ? by_charts[charts] : result; }
   std::vector<IT> value;
   std::vector<char> known;
   std::vector<char> certified_so_far, boundary_so_far, ineq_boundary_so_far;
@@ -121,7 +158,7 @@ template <class IT, class NT> struct Plan_run
   const std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
 
   Plan_run(const Polynomial_system<NT>& s, const Solution_plan& p, const Subdivision_solver_parameters& q)
-      : sys(s), plan(p), P(q), value(s.number_of_variables()), known(s.number_of_variables(), 0)
+      : sys(&s), plan(p), P(q), value(s.number_of_variables()), known(s.number_of_variables(), 0)
   {
   }
 
@@ -137,9 +174,9 @@ template <class IT, class NT> struct Plan_run
 
   std::vector<IT> current_box(std::size_t b, const std::vector<IT>& local_box) const
   {
-    std::vector<IT> box(sys.number_of_variables());
+    std::vector<IT> box(sys->number_of_variables());
     const auto& vars = plan.blocks()[b].variables;
-    for (std::size_t j = 0; j < box.size(); ++j) box[j] = known[j] ? value[j] : O::make(O::bound_from_double(sys.box[j].first), O::bound_from_double(sys.box[j].second));
+    for (std::size_t j = 0; j < box.size(); ++j) box[j] = known[j] ? value[j] : O::make(O::bound_from_double(sys->box[j].first), O::bound_from_double(sys->box[j].second));
     for (std::size_t k = 0; k < vars.size() && k < local_box.size(); ++k) box[vars[k]] = local_box[k];
     return box;
   }
@@ -148,28 +185,46 @@ template <class IT, class NT> struct Plan_run
   // coefficients (CT = NT); otherwise the inputs are substituted (CT = IT). Chosen by `own`,
   // not by the types: with interval coefficients NT is IT, and the inputs must still be
   // substituted (renumbering alone dropped them: wrong roots).
-  template <class CT> Solver_result<IT> solve_block(const Plan_block& blk, bool last, bool own)
+  // the block's equations and inequalities in its own variables, the inputs replaced by
+  // `at` (where `known`)
+  template <class CT> Polynomial_system<CT> block_system(const Plan_block& blk, bool own, const std::vector<IT>& at) const
   {
     auto restrict = [&](const Sparse_polynomial<NT>& f) -> Sparse_polynomial<CT> {
       if constexpr (std::is_same<CT, NT>::value)
         if (own) return restrict_exact(f, blk.variables);
-      if constexpr (std::is_same<CT, IT>::value) return restrict_polynomial<IT>(f, blk.variables, value, known);
+      if constexpr (std::is_same<CT, IT>::value) return restrict_polynomial<IT>(f, blk.variables, at, known);
       else throw std::logic_error("solve_with_plan: a block with inputs solved with exact coefficients");
     };
     Polynomial_system<CT> s;
     for (std::size_t j : blk.variables) {
-      s.variable_names.push_back(j < sys.variable_names.size() ? sys.variable_names[j] : "x" + std::to_string(j));
-      s.box.push_back(sys.box[j]);
+      s.variable_names.push_back(j < sys->variable_names.size() ? sys->variable_names[j] : "x" + std::to_string(j));
+      s.box.push_back(sys->box[j]);
     }
     for (std::size_t i : blk.equations) {
-      s.equations.push_back(restrict(sys.equations[i]));
-      s.labels.push_back(i < sys.labels.size() ? sys.labels[i] : std::string());
+      s.equations.push_back(restrict(sys->equations[i]));
+      s.labels.push_back(i < sys->labels.size() ? sys->labels[i] : std::string());
     }
-    for (std::size_t q : blk.inequalities) s.inequalities.push_back(restrict(sys.inequalities[q]));
+    for (std::size_t q : blk.inequalities) s.inequalities.push_back(restrict(sys->inequalities[q]));
     for (const auto& f : s.equations)
       if (f.is_zero())
         throw Input_error("solve_with_plan: an equation of block " + std::to_string(&blk - &plan.blocks()[0]) +
                           " vanishes identically once the values before it are substituted");
+    return s;
+  }
+  // exact coefficients while nothing before the block enters it (its equations and
+  // inequalities involve its own variables only)
+  bool own_block(const Plan_block& blk) const
+  {
+    bool own = true;
+    for (std::size_t i : blk.equations)
+      for (std::size_t j : sys->equations[i].variables()) own = own && std::binary_search(blk.variables.begin(), blk.variables.end(), j);
+    for (std::size_t q : blk.inequalities)
+      for (std::size_t j : sys->inequalities[q].variables()) own = own && std::binary_search(blk.variables.begin(), blk.variables.end(), j);
+    return own;
+  }
+  template <class CT> Solver_result<IT> solve_block(const Plan_block& blk, bool last, bool own)
+  {
+    const Polynomial_system<CT> s = block_system<CT>(blk, own, value);
     Subdivision_solver_parameters q = P;
     // the roots of a block with blocks after it become their coefficients: tighter enclosures
     // keep those coefficients narrow
@@ -194,27 +249,35 @@ template <class IT, class NT> struct Plan_run
     if (b == plan.blocks().size()) {
       Plan_root<IT> r;
       r.enclosure = value;
-      if (certified && plan.blocks().size() > 1 && !whole_too_large) {
+      if (certified && plan.blocks().size() > 1) {
         // the blocks' enclosures carry the widths of the inputs through the chain (interval
         // coefficients evaluated term by term): the Krawczyk test on the whole system, from
         // their product, tightens the root to the tolerance (the root it proves unique in a
         // box holding the product is the one the blocks proved there)
         ++result.refinements;
-        try {
-          if (auto t = Subdivision_solver<IT>(P).refine(sys, value)) r.enclosure = t->enclosure;
+        bool done = false;
+        if (!whole_too_large) try {
+            if (auto t = Subdivision_solver<IT>(P).refine(*sys, value)) {
+              r.enclosure = t->enclosure;
+              done = true;
+            }
+          } catch (const Input_error&) {
+            // the whole system is beyond the solver's dense arrays (what the plan is for: two
+            // stacked platforms): not tried again
+            whole_too_large = true;
+          }
+        // else block after block, each block's test with the inputs the blocks before it
+        // tightened; if that fails too, the blocks' certified enclosure stands
+        if (!done) {
+          if (refine_by_blocks(r.enclosure)) ++result.refinements_by_blocks;
           else ++result.refinements_failed;
-        } catch (const Input_error&) {
-          // the whole system is beyond the solver's dense arrays (what the plan is for: two
-          // stacked platforms): the blocks' certified enclosure stands, for every root
-          ++result.refinements_failed;
-          whole_too_large = true;
         }
       }
       for (const IT& v : value) r.approximation.push_back(0.5 * O::lower_double(v) + 0.5 * O::upper_double(v));
       r.certified = certified;
       r.on_boundary = boundary;
       r.on_inequality_boundary = ineq_boundary;
-      result.roots.push_back(r);
+      target().roots.push_back(r);
       return;
     }
     const std::string stop = stop_reason();
@@ -226,18 +289,88 @@ template <class IT, class NT> struct Plan_run
       v.kind = Box_class::PENDING;
       v.reason = stop;
       v.box = current_box(b, std::vector<IT>());
-      result.unresolved.push_back(v);
+      target().unresolved.push_back(v);
       return;
     }
+    if (group) {
+      // the chart groups of this block's variables no block before it has chosen: each
+      // assignment of their charts is a system of its own for this block and those after it
+      std::vector<std::size_t> fresh;
+      for (std::size_t j : plan.blocks()[b].variables) {
+        const std::size_t g = (*group)[j];
+        if (g != std::size_t(-1) && !assigned[g] && std::find(fresh.begin(), fresh.end(), g) == fresh.end()) fresh.push_back(g);
+      }
+      if (!fresh.empty()) {
+        const Polynomial_system<NT>* outer = sys;
+        for (std::size_t g : fresh) assigned[g] = 1;
+        std::vector<int> local(fresh.size(), 0);
+        for (;;) {
+          for (std::size_t k = 0; k < fresh.size(); ++k) charts[fresh[k]] = local[k];
+          const Polynomial_system<NT> s = make_system(charts);
+          // the plan's promise: the blocks before this one do not see these charts (made from
+          // the union of the charts' supports; checked, a system built directly could differ)
+          for (std::size_t e = 0; e < b; ++e) {
+            for (std::size_t i : plan.blocks()[e].equations)
+              if (!identical_polynomials(s.equations[i], outer->equations[i]))
+                throw Input_error("solve_with_plan_over_charts: the charts of block " + std::to_string(b) + " change equation " +
+                                  std::to_string(i) + " of block " + std::to_string(e) + ", solved before them");
+            for (std::size_t q : plan.blocks()[e].inequalities)
+              if (!identical_polynomials(s.inequalities[q], outer->inequalities[q]))
+                throw Input_error("solve_with_plan_over_charts: the charts of block " + std::to_string(b) + " change inequality " +
+                                  std::to_string(q) + " of block " + std::to_string(e) + ", solved before them");
+          }
+          sys = &s;
+          solve_block_and_go(b, certified, boundary, ineq_boundary);
+          std::size_t k = 0;
+          while (k < fresh.size() && ++local[k] == (*radix)[fresh[k]]) local[k++] = 0;
+          if (k == fresh.size()) break;
+        }
+        for (std::size_t g : fresh) { assigned[g] = 0; charts[g] = 0; }
+        sys = outer;
+        return;
+      }
+    }
+    solve_block_and_go(b, certified, boundary, ineq_boundary);
+  }
+
+  // `at`, a root the blocks certified, tightened block after block by the Krawczyk test of
+  // each block with the inputs as the blocks before it tightened them (interval coefficients
+  // that narrow: the test then reaches the tolerance); false, `at` unchanged, if a test fails
+  bool refine_by_blocks(std::vector<IT>& at) const
+  {
+    std::vector<IT> v = at;
+    for (const Plan_block& blk : plan.blocks()) {
+      const bool own = own_block(blk);
+      std::vector<IT> box;
+      for (std::size_t j : blk.variables) box.push_back(v[j]);
+      // (as in the solve: a thousandth of the tolerance for a block whose roots are the
+      // coefficients of others, whose widths its conditioning multiplies)
+      Subdivision_solver_parameters q = P;
+      if (&blk != &plan.blocks().back()) q.tolerance = P.tolerance * 1e-3;
+      std::optional<Solver_root<IT>> t;
+      try {
+        t = own ? Subdivision_solver<IT>(q).refine(block_system<NT>(blk, true, v), box)
+                : Subdivision_solver<IT>(q).refine(block_system<IT>(blk, false, v), box);
+      } catch (const Input_error&) {
+        return false;
+      }
+      if (!t) return false;
+      // both hold the root: their intersection
+      for (std::size_t k = 0; k < blk.variables.size(); ++k) {
+        IT& x = v[blk.variables[k]];
+        const IT& y = t->enclosure[k];
+        x = O::make(O::lower(x) < O::lower(y) ? O::lower(y) : O::lower(x), O::upper(y) < O::upper(x) ? O::upper(y) : O::upper(x));
+      }
+    }
+    at = v;
+    return true;
+  }
+
+  void solve_block_and_go(std::size_t b, bool certified, bool boundary, bool ineq_boundary)
+  {
     const Plan_block& blk = plan.blocks()[b];
     const bool last = b + 1 == plan.blocks().size();
-    // exact coefficients while nothing before the block enters it (its equations and
-    // inequalities involve its own variables only)
-    bool own = true;
-    for (std::size_t i : blk.equations)
-      for (std::size_t j : sys.equations[i].variables()) own = own && std::binary_search(blk.variables.begin(), blk.variables.end(), j);
-    for (std::size_t q : blk.inequalities)
-      for (std::size_t j : sys.inequalities[q].variables()) own = own && std::binary_search(blk.variables.begin(), blk.variables.end(), j);
+    const bool own = own_block(blk);
     Solver_result<IT> res = own ? solve_block<NT>(blk, last, true) : solve_block<IT>(blk, last, false);
     ++result.block_solves;
     result.boxes += res.statistics.boxes;
@@ -249,14 +382,16 @@ template <class IT, class NT> struct Plan_run
       v.kind = u.kind;
       v.reason = u.reason;
       v.box = current_box(b, u.box);
-      result.unresolved.push_back(v);
+      target().unresolved.push_back(v);
     }
+    const Polynomial_system<NT>* mine = sys;
     for (const auto& r : res.roots) {
       for (std::size_t k = 0; k < blk.variables.size(); ++k) {
         value[blk.variables[k]] = r.enclosure[k];
         known[blk.variables[k]] = 1;
       }
       go(b + 1, certified && r.certified, boundary || r.on_boundary, ineq_boundary || r.on_inequality_boundary);
+      sys = mine;  // (a block after it may have chosen charts: their system is gone)
     }
     for (std::size_t j : blk.variables) known[j] = 0;
   }
@@ -294,6 +429,34 @@ void check_plan(const Polynomial_system<NT>& system, const Solution_plan& plan, 
 
 } // namespace internal
 
+namespace internal {
+
+// Throws Input_error unless `plan` is well-constrained with every inequality attached to a
+// block (the over- or under-determined part named, with the variable names of `system`).
+template <class NT>
+void check_solvable(const Polynomial_system<NT>& system, const Solution_plan& plan, const char* who)
+{
+  auto names = [&](const std::vector<std::size_t>& v, bool variables) {
+    std::string r;
+    for (std::size_t k = 0; k < v.size(); ++k) {
+      std::size_t j = v[k];
+      r += (k ? ", " : "") + (variables ? (j < system.variable_names.size() ? system.variable_names[j] : "x" + std::to_string(j))
+                                        : "equation " + std::to_string(j));
+    }
+    return r;
+  };
+  if (!plan.over_determined_equations().empty())
+    throw Input_error(std::string(who) + ": the system is over-determined: " + names(plan.over_determined_equations(), false) +
+                      " (redundant or in conflict) in " + names(plan.over_determined_variables(), true));
+  if (!plan.under_determined_variables().empty())
+    throw Input_error(std::string(who) + ": the system is under-determined (free variables " + names(plan.under_determined_variables(), true) +
+                      "): its solution set is not finite; curves are not traced by solve_with_plan");
+  for (std::size_t q : plan.unattached_inequalities())
+    throw Input_error(std::string(who) + ": inequality " + std::to_string(q) + " involves a variable no block solves");
+}
+
+} // namespace internal
+
 /*!
 \ingroup PkgRigidIncidenceSolver
 \brief Every real root of `system` in its box, solved block after block along `plan`
@@ -326,23 +489,7 @@ Plan_result<IT> solve_with_plan(const Polynomial_system<NT>& system_in, const So
   if (system.box.size() != system.number_of_variables())
     throw Input_error("solve_with_plan: the box has " + std::to_string(system.box.size()) + " intervals for " +
                       std::to_string(system.number_of_variables()) + " variables");
-  auto names = [&](const std::vector<std::size_t>& v, bool variables) {
-    std::string r;
-    for (std::size_t k = 0; k < v.size(); ++k) {
-      std::size_t j = v[k];
-      r += (k ? ", " : "") + (variables ? (j < system.variable_names.size() ? system.variable_names[j] : "x" + std::to_string(j))
-                                        : "equation " + std::to_string(j));
-    }
-    return r;
-  };
-  if (!plan.over_determined_equations().empty())
-    throw Input_error("solve_with_plan: the system is over-determined: " + names(plan.over_determined_equations(), false) +
-                      " (redundant or in conflict) in " + names(plan.over_determined_variables(), true));
-  if (!plan.under_determined_variables().empty())
-    throw Input_error("solve_with_plan: the system is under-determined (free variables " + names(plan.under_determined_variables(), true) +
-                      "): its solution set is not finite; curves are not traced by solve_with_plan");
-  for (std::size_t q : plan.unattached_inequalities())
-    throw Input_error("solve_with_plan: inequality " + std::to_string(q) + " involves a variable no block solves");
+  internal::check_solvable(system, plan, "solve_with_plan");
   internal::Solver_precision_guard<IT> guard(parameters.precision);
   internal::Plan_run<IT, NT> run(system, plan, parameters);
   const auto start = std::chrono::steady_clock::now();
@@ -351,6 +498,107 @@ Plan_result<IT> solve_with_plan(const Polynomial_system<NT>& system_in, const So
   std::sort(run.result.roots.begin(), run.result.roots.end(),
             [](const Plan_root<IT>& a, const Plan_root<IT>& b) { return a.approximation < b.approximation; });
   return run.result;
+}
+
+/// \ingroup PkgRigidIncidenceSolver
+/// What `solve_with_plan_over_charts()` found with one assignment of charts.
+template <class IT>
+struct Plan_chart_roots
+{
+  std::vector<int> charts;  ///< per chart group, its chart
+  /// the roots of the system of these charts, sorted by approximation, and the regions a block
+  /// left undecided with these charts for its own groups and those before it (the groups of the
+  /// blocks after it, not reached, at chart 0: the region stands for all of their charts)
+  Plan_result<IT> result;
+};
+
+/// \ingroup PkgRigidIncidenceSolver
+/// The result of `solve_with_plan_over_charts()`.
+template <class IT>
+struct Plan_charts_result
+{
+  /// the assignments of charts in which something was found (roots or regions), in
+  /// lexicographic order of `charts`; every other assignment has no root: an earlier block,
+  /// solved in its own charts, had none for it
+  std::vector<Plan_chart_roots<IT>> found;
+  /// the totals over every block solve (`block_solves`, `boxes`, `krawczyk_tests`,
+  /// `refinements`, `refinements_by_blocks`, `refinements_failed`, `seconds`) and the first
+  /// diagnosis met; its `roots`
+  /// and `unresolved` are empty (they are in `found`)
+  Plan_result<IT> totals;
+};
+
+/*!
+\ingroup PkgRigidIncidenceSolver
+\brief `solve_with_plan()` over every assignment of charts to groups of variables, each
+group's chart chosen by the first block that solves one of its variables.
+
+A scene's reduced system has one chart per hinge (a variable and its inverse,
+`Reduced_system(base, charts)`); solving each combination of charts whole repeats every block
+for each chart of the variables after it, and a block with no root in its charts is solved
+again for every chart of the others. Here block \f$b\f$ is solved once per assignment of the
+charts of its own new groups, for each combination of the roots before it, and only the
+assignments under roots are visited: the roots found are those of `solve_with_plan()` on each
+full assignment's system, with a fraction of the block solves (issue 28, item 1).
+
+`group[j]` is the chart group of variable \f$j\f$ (`std::size_t(-1)`: the variable has one chart),
+`charts_per_group[g]` the charts of group \f$g\f$, and `make_system(charts)` the system of an
+assignment (one chart per group); the equations and inequalities of a block must not depend on
+the charts of the groups of later blocks, so `plan` must be made from the union of the
+supports of the systems (a variable an equation involves in any chart); each system built is
+checked against it.
+\throws Input_error as `solve_with_plan()`, for each system built, or if `group` does not
+have one entry per variable or names a group beyond `charts_per_group`.
+*/
+template <class IT, class NT>
+Plan_charts_result<IT> solve_with_plan_over_charts(const Solution_plan& plan, const std::vector<std::size_t>& group,
+                                                   const std::vector<int>& charts_per_group,
+                                                   const std::function<Polynomial_system<NT>(const std::vector<int>&)>& make_system,
+                                                   const Subdivision_solver_parameters& parameters = Subdivision_solver_parameters())
+{
+  const char* who = "solve_with_plan_over_charts";
+  if (group.size() != plan.number_of_variables())
+    throw Input_error(std::string(who) + ": " + std::to_string(group.size()) + " chart groups given for " +
+                      std::to_string(plan.number_of_variables()) + " variables");
+  for (std::size_t g : group)
+    if (g != std::size_t(-1) && g >= charts_per_group.size())
+      throw Input_error(std::string(who) + ": chart group " + std::to_string(g) + " of " + std::to_string(charts_per_group.size()));
+  for (int n : charts_per_group)
+    if (n < 1) throw Input_error(std::string(who) + ": a chart group without charts");
+  auto build = [&](const std::vector<int>& charts) {
+    Polynomial_system<NT> s = make_system(charts);
+    internal::check_plan(s, plan, who);
+    if (s.box.size() != s.number_of_variables())
+      throw Input_error(std::string(who) + ": the box has " + std::to_string(s.box.size()) + " intervals for " +
+                        std::to_string(s.number_of_variables()) + " variables");
+    Polynomial_system<NT> scaled;
+    const Polynomial_system<NT>& t = internal::scaled_to_unit(s, scaled);
+    return &t == &scaled ? scaled : s;
+  };
+  const std::vector<int> zero(charts_per_group.size(), 0);
+  const Polynomial_system<NT> first = build(zero);
+  internal::check_solvable(first, plan, who);
+  internal::Solver_precision_guard<IT> guard(parameters.precision);
+  internal::Plan_run<IT, NT> run(first, plan, parameters);
+  run.group = &group;
+  run.radix = &charts_per_group;
+  run.make_system = build;
+  run.charts = zero;
+  run.assigned.assign(charts_per_group.size(), 0);
+  const auto start = std::chrono::steady_clock::now();
+  run.go(0, true, false, false);
+  Plan_charts_result<IT> out;
+  out.totals = run.result;
+  out.totals.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  for (auto& x : run.by_charts) {
+    Plan_chart_roots<IT> f;
+    f.charts = x.first;
+    f.result = std::move(x.second);
+    std::sort(f.result.roots.begin(), f.result.roots.end(),
+              [](const Plan_root<IT>& a, const Plan_root<IT>& b) { return a.approximation < b.approximation; });
+    out.found.push_back(std::move(f));
+  }
+  return out;
 }
 
 } // namespace Rigid_incidence
