@@ -22,7 +22,8 @@
 //   arrays (the whole solve refuses it): complete, every configuration certified and holding
 //   in the scene, the planted one among them, its enclosures below 1e-7 (block after block);
 // - the same with a time limit of 0.3 s or an interrupt already set: not complete, and what
-//   it holds is among the full answer.
+//   it holds is among the full answer; the limit counts no combination solved (the plan over
+//   the charts was cut inside).
 
 #include <CGAL/Gmpq.h>
 #include <CGAL/Simple_cartesian.h>
@@ -228,6 +229,14 @@ static void along_the_plan()
               << (cut.result.complete() ? "complete" : "not complete") << "\n";
     CHECK(!cut.result.complete() && !cut.result.limits.empty() && among(cut.result, full.result, labels),
           "two platforms in 0.3 s: not complete, says why, holds only configurations of the full answer");
+    // the plan over the charts (all 16 combinations in one) cut inside: none counted solved
+    // (it once said "16 of 16 combinations solved" with its blocks pending)
+    bool counted = false;
+    for (const auto& l : cut.result.limits) {
+      std::cout << "  limit: " << l << "\n";
+      counted = counted || (l.find("0 of 16 combinations") != std::string::npos && l.find("over the charts") != std::string::npos);
+    }
+    CHECK(counted, "two platforms in 0.3 s: the limit says 0 of 16 combinations solved, the plan over the charts cut short");
     std::atomic<bool> stop{true};
     const Outcome stopped = solve(platforms, true, 0, &stop);
     CHECK(!stopped.result.complete() && among(stopped.result, full.result, labels), "two platforms interrupted: not complete");

@@ -1110,6 +1110,7 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
     }
   }
   std::size_t done = 0;
+  bool plan_cut = false;  // a plan over the charts stopped inside (its combinations not counted done)
   const char* stopped = nullptr;
   auto report = [&]() {
     if (!parameters.progress) return;
@@ -1404,7 +1405,14 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
       // the others by a change of chart of this one where it allows (hinges), else built
       const bool changes = parameters.change_charts && zero->changes_charts();
       st.reduce_seconds += since(t1);
-      if (zero->number_of_variables() > 0 && zero->number_of_equations() == zero->number_of_variables()) {
+      // (one block in chart 0 is one block over the charts: the union can only merge blocks;
+      // told from the equations' supports, before any system is copied)
+      auto blocks_in_chart_0 = [&]() {
+        std::vector<std::vector<std::size_t>> v;
+        for (const auto& e : zero->equations()) v.push_back(e.variables);
+        return Solution_plan(zero->number_of_variables(), v).blocks().size();
+      };
+      if (zero->number_of_variables() > 0 && zero->number_of_equations() == zero->number_of_variables() && blocks_in_chart_0() > 1) {
         auto t2 = Clock::now();
         auto build = [&](const std::vector<int>& ch) {
           return changes ? Reduced_system<Traits, NT>(*zero, ch)
@@ -1414,8 +1422,7 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
         // every edge at chart j (a chart moves the exponents of its edge's variables only;
         // the plan's solve checks each system it builds against it)
         const Polynomial_system<NT> s0 = system_of(*zero);
-        // (the union can only merge blocks: one block in chart 0 is one block)
-        if (Solution_plan(s0).blocks().size() > 1) {
+        {
           std::vector<std::vector<std::size_t>> eqv(s0.equations.size()), inv(s0.inequalities.size());
           auto unite = [](std::vector<std::vector<std::size_t>>& u, const std::vector<Sparse_polynomial<NT>>& a) {
             for (std::size_t i = 0; i < a.size() && i < u.size(); ++i) {
@@ -1484,7 +1491,15 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
                 process(f.charts, r, sys, res);
               }
               st.verify_seconds += since(t3);
-              done += per_placement;
+              // stopped inside (the time limit, the interrupt): what it certified is kept, its
+              // rest is pending, and none of its combinations counts as solved
+              bool cut = false;
+              for (const auto& f : pc->found)
+                for (const auto& u : f.result.unresolved)
+                  cut = cut || (u.kind == Box_class::PENDING &&
+                                (u.reason.find("interrupted") != std::string::npos || u.reason.find("time budget") != std::string::npos));
+              if (cut) plan_cut = true;
+              else done += per_placement;
               report();
               continue;
             }
@@ -1496,6 +1511,7 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
       // each combination alone from here: chart 0's system is the base of the others
       base_tried = true;
       if (changes) base.emplace(std::move(*zero));
+      report();  // (chart 0's system built: on a large scene the first visible step)
     }
     std::vector<int> charts(radix_c.size(), 0);
     do {
@@ -1585,6 +1601,9 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
         << " after " << seconds_text(seconds_before + since(started)) << " s: " << done << " of ";
     if (total) why << total; else why << "more than 2^62";
     why << " combinations of charts and placements solved (a solve it cut short left its rest pending), the others not solved";
+    if (plan_cut)
+      why << "; a solve along the plan over the charts of a placement combination was cut short: the configurations it"
+             " certified are listed, the blocks it did not reach are pending";
     out.limits.push_back(why.str());
   }
   if (!positive.empty()) out.diagnosis = positive;
