@@ -72,21 +72,8 @@ int run(const RI::Polynomial_system_file& file, const RI::Solution_plan& plan, c
   bool traced = false, along_plan = false;
   if (o.no_plan) {
     // the undecomposed solver, in the same result shape
-    auto s = RI::Subdivision_solver<IT>(p).solve(sys);
-    r.block_solves = 1;
-    r.boxes = s.statistics.boxes;
-    r.krawczyk_tests = s.statistics.krawczyk_tests;
-    r.diagnosis = s.diagnosis;
-    for (const auto& x : s.roots) {
-      RI::Plan_root<IT> y;
-      y.enclosure = x.enclosure;
-      y.approximation = x.approximation;
-      y.certified = x.certified;
-      y.on_boundary = x.on_boundary;
-      y.on_inequality_boundary = x.on_inequality_boundary;
-      r.roots.push_back(y);
-    }
-    add_unresolved(r, s.unresolved);
+    r = RI::internal::plan_result_of_solver(RI::Subdivision_solver<IT>(p).solve(sys),
+                                            RI::internal::Interval_ops<IT>::multiprecision ? p.precision : 53);
   } else if (plan.structure() == RI::Solution_plan::WELL_CONSTRAINED) {
     r = RI::solve_with_plan<IT>(sys, plan, p);
   } else if (plan.structure() == RI::Solution_plan::ONE_DEGREE_OF_FREEDOM && sys.number_of_equations() + 1 == sys.number_of_variables() &&
@@ -164,7 +151,8 @@ int run(const RI::Polynomial_system_file& file, const RI::Solution_plan& plan, c
                       {"values", values},
                       {"enclosure", enclosure},
                       {"on_boundary", x.on_boundary},
-                      {"on_inequality_boundary", x.on_inequality_boundary}});
+                      {"on_inequality_boundary", x.on_inequality_boundary},
+                      {"precision", x.precision}});
     }
     j["solutions"] = sols;
     nlohmann::ordered_json un = nlohmann::ordered_json::array();
@@ -196,6 +184,9 @@ int run(const RI::Polynomial_system_file& file, const RI::Solution_plan& plan, c
                   {"boxes", r.boxes},
                   {"krawczyk_tests", r.krawczyk_tests},
                   {"refinements", r.refinements},
+                  {"refinements_sparse", r.refinements_sparse},
+                  {"refinements_multiprecision", r.refinements_multiprecision},
+                  {"refinements_wider_than_tolerance", r.refinements_failed},
                   {"curve_traced_along_plan", along_plan},
                   {"curve_boxes", curves.statistics.boxes},
                   {"face_solves", curves.statistics.face_solves},
@@ -245,6 +236,9 @@ int run(const RI::Polynomial_system_file& file, const RI::Solution_plan& plan, c
   }
   std::cout << std::setprecision(6) << "stats: " << r.block_solves << " block solve(s), " << r.boxes << " boxes, " << r.krawczyk_tests
             << " Krawczyk tests, " << solve_seconds << " s\n";
+  if (r.refinements_sparse > 0)
+    std::cout << "  " << r.refinements_sparse << " root(s) tightened by the whole system's sparse Krawczyk test, " << r.refinements_multiprecision
+              << " of them in more than double precision, " << r.refinements_failed << " left wider than the tolerance\n";
   return 0;
 }
 

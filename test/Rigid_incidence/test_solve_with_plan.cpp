@@ -92,7 +92,7 @@ int main(int argc, char** argv)
   const std::uint64_t seed = argc > 2 ? std::strtoull(argv[2], nullptr, 10) : 20261123;
   std::cout << "test_solve_with_plan: seed " << seed << ", " << systems << " systems\n";
   Rng rng(seed);
-  std::size_t solved = 0, roots = 0, blocks = 0, plan_boxes = 0, plain_boxes = 0, plan_boxes_compared = 0, undecomposed_incomplete = 0, refinements = 0, refinements_failed = 0, kept = 0, gmpfi_runs = 0,
+  std::size_t solved = 0, roots = 0, blocks = 0, plan_boxes = 0, plain_boxes = 0, plan_boxes_compared = 0, undecomposed_incomplete = 0, refinements = 0, refinements_failed = 0, sparse_refinements = 0, kept = 0, gmpfi_runs = 0,
               interval_runs = 0, chart_runs = 0, chart_block_solves = 0, chart_separate_solves = 0;
   bool refusal_checked = false;
   for (int s = 0; s < systems; ++s) {
@@ -180,6 +180,26 @@ int main(int argc, char** argv)
     }
     refinements += pr.refinements;
     refinements_failed += pr.refinements_failed;
+    // exact coefficients: every root of several blocks within the tolerance, but those the
+    // result counts as left wider (the whole system's dense test, else its sparse test in
+    // double and then in MPFR)
+    if (plan.blocks().size() > 1) {
+      std::size_t wide = 0;
+      const double tolerance = RI::Subdivision_solver_parameters().tolerance;
+      for (const auto& r : pr.roots) {
+        double w = 0;
+        bool inside = true;  // (the approximation is a point of the final enclosure, not of the blocks' product)
+        for (std::size_t j = 0; j < r.enclosure.size(); ++j) {
+          const auto& x = r.enclosure[j];
+          w = (std::max)(w, x.sup() - x.inf());
+          inside = inside && x.inf() <= r.approximation[j] && r.approximation[j] <= x.sup();
+        }
+        wide += r.certified && w > tolerance;
+        CHECK(inside, name << ": a root's approximation outside its enclosure");
+      }
+      CHECK(wide <= pr.refinements_failed, name << ": " << wide << " roots wider than the tolerance, " << pr.refinements_failed << " counted");
+      sparse_refinements += pr.refinements_sparse;
+    }
     // the undecomposed solver (costly beyond 4 variables: every tenth system there)
     const bool undecomposed = n <= 4 || s % 10 == 0;
     if (undecomposed) {
@@ -300,7 +320,7 @@ int main(int argc, char** argv)
   std::cout << solved << " systems, " << roots << " roots in the boxes, " << blocks << " blocks; boxes with the plan " << plan_boxes
             << " (" << plan_boxes_compared << " on the systems also solved undecomposed, which took " << plain_boxes
             << " and ran out of boxes on " << undecomposed_incomplete << "); " << refinements << " roots refined on the whole system ("
-            << refinements_failed << " failed); " << kept << " roots kept by the inequalities; " << gmpfi_runs << " Gmpfi runs, "
+            << sparse_refinements << " by the sparse test, " << refinements_failed << " left wider than the tolerance); " << kept << " roots kept by the inequalities; " << gmpfi_runs << " Gmpfi runs, "
             << interval_runs << " with interval coefficients; " << chart_runs << " over charts (box halves): " << chart_block_solves
             << " block solves, " << chart_separate_solves << " for each assignment alone\n";
   std::cout << checks << " checks, " << failures << " failures\n";

@@ -26,6 +26,7 @@
 #include <cmath>
 #include <deque>
 #include <limits>
+#include <map>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -708,18 +709,21 @@ public:
       for (std::size_t k = 0; k < map.size(); ++k) if (map[k] != none) two.push_back(k);
       const std::size_t A = map[two[0]], B = map[two[1]], C = Pl.start_third;
       std::vector<W> lengths;
+      Meet_index lengths_index;
       for (std::size_t ei = 0; ei < part_placements_[Pl.start_part].size(); ++ei) {
         const auto& e = part_placements_[Pl.start_part][ei];
         const P d = sub(e.coordinates[two[0]], e.coordinates[two[1]]);
         const W L2 = part_frames_[Pl.start_part][ei].dot(d, d);
         bool again = false;
-        for (const W& l : lengths)
-          if (same(l, L2)) {
+        const CGAL::Interval_nt<false> key = Meet_index::key(L2);
+        for (std::size_t o : lengths_index.candidates(key))
+          if (const W& l = lengths[o]; same(l, L2)) {
             if (narrow_enough(l, 2) && narrow_enough(L2, 2)) again = true;
             else note_undecided(false, "two lengths of '" + Pl.labels[A] + "'-'" + Pl.labels[B] + "' that its part gives are not separated");
           }
         if (again) continue;
         lengths.push_back(L2);
+        lengths_index.add(key);
         const W rA = from_rational(*Pl.known[C][A]), rB = from_rational(*Pl.known[C][B]);
         const W uv = (L2 + rA - rB) / W(2), y2 = rA - uv * uv / L2;  // y2: the squared height of C over AB
         bool here_undecided = false;
@@ -1007,12 +1011,15 @@ private:
     std::vector<std::size_t> qs;
     for (std::size_t q = 0; q < plan_.m; ++q) if (s.distance_part[q] == j) qs.push_back(q);
     std::vector<std::vector<W>> seen;
+    Meet_index seen_index;
     for (std::size_t ei = 0; ei < part_placements_[j].size(); ++ei) {
       const auto& e = part_placements_[j][ei];
       std::vector<W> L;
       for (std::size_t q : qs) { const P d = sub(e.coordinates[lp], e.coordinates[local(q)]); L.push_back(part_frames_[j][ei].dot(d, d)); }
       bool again = false;
-      for (const auto& other : seen) {
+      const CGAL::Interval_nt<false> key = Meet_index::key(L);
+      for (std::size_t o : seen_index.candidates(key)) {
+        const std::vector<W>& other = seen[o];
         bool same = true, narrow = true;
         for (std::size_t c = 0; c < L.size(); ++c) {
           same = same && this->same(L[c], other[c]);
@@ -1025,6 +1032,7 @@ private:
       }
       if (again) continue;
       seen.push_back(L);
+      seen_index.add(key);
       for (std::size_t c = 0; c < qs.size(); ++c) r2[qs[c]] = L[c];
       with_part_distances(k, i + 1, r2, also(singular, e.singular_reason), undecided || e.undecided);
     }
@@ -1116,6 +1124,72 @@ private:
     }
   }
 
+  // Values kept so far (placements of a part in a superposition, lengths of a start part's
+  // segment), looked up by a necessary condition of meeting: the enclosures of one number per
+  // value (a length; for a placement, one fixed generic linear form of its coordinates), in
+  // double intervals rounded outward, meet. Scanning every kept value made the merged parts of
+  // long strips and molecular rings quadratic (2^14 placements of a 20-atom ring's part: 1.3e8
+  // comparisons in MPFR).
+  struct Meet_index
+  {
+    typedef CGAL::Interval_nt<false> D;
+    std::multimap<double, std::size_t> by_lower;  // finite keys: lower bound -> value
+    std::vector<std::size_t> unbounded;           // values whose key is not finite (always candidates)
+    double widest = 0;                            // the widest finite key
+    std::size_t size = 0;
+
+    // weight j of a linear form: 1 + frac(j * golden ratio), distinct, no symmetry of the form
+    static double weight(std::size_t j)
+    {
+      return 1 + (double(j) * 0.6180339887498949 - std::floor(double(j) * 0.6180339887498949));
+    }
+    // a placement's key (its coordinates), a list of lengths' key, a length's key
+    static D key(const std::vector<P>& x)
+    {
+      typename D::Protector protect;
+      D k(0);
+      std::size_t j = 0;
+      for (const P& q : x)
+        for (std::size_t c = 0; c < 3; ++c) k += D(weight(j++)) * D(CGAL::to_interval(q[c]));
+      return k;
+    }
+    static D key(const std::vector<W>& x)
+    {
+      typename D::Protector protect;
+      D k(0);
+      for (std::size_t j = 0; j < x.size(); ++j) k += D(weight(j)) * D(CGAL::to_interval(x[j]));
+      return k;
+    }
+    static D key(const W& x) { return D(CGAL::to_interval(x)); }
+    // the values whose keys may meet `k`, in the order they were added
+    std::vector<std::size_t> candidates(const D& k) const
+    {
+      if (!std::isfinite(k.inf()) || !std::isfinite(k.sup())) {
+        std::vector<std::size_t> all(size);
+        for (std::size_t i = 0; i < size; ++i) all[i] = i;
+        return all;
+      }
+      // a key [lo, hi] meets k when lo <= sup k and hi >= inf k, so lo >= inf k - widest
+      typename D::Protector protect;
+      const double from = (D(k.inf()) - D(widest)).inf();
+      std::vector<std::size_t> r = unbounded;
+      for (auto it = by_lower.lower_bound(from); it != by_lower.end() && it->first <= k.sup(); ++it) r.push_back(it->second);
+      std::sort(r.begin(), r.end());
+      return r;
+    }
+    void add(const D& k)
+    {
+      const std::size_t i = size++;
+      if (!std::isfinite(k.inf()) || !std::isfinite(k.sup())) {
+        unbounded.push_back(i);
+        return;
+      }
+      by_lower.emplace(k.inf(), i);
+      typename D::Protector protect;
+      widest = (std::max)(widest, (D(k.sup()) - D(k.inf())).sup());
+    }
+  };
+
   // A part superposed on its placed points, one placement after the other: the rigid motion
   // that takes three of them (the farthest from a line) to their places maps the others;
   // a placement whose images miss a placed point is excluded. Two placements of the part
@@ -1128,6 +1202,7 @@ private:
     for (std::size_t i = 0; i < map.size(); ++i)
       if (map[i] != none && std::find(s.places.begin(), s.places.end(), map[i]) == s.places.end()) on.push_back(i);
     std::vector<std::vector<P>> seen;
+    Meet_index seen_index;
     bool checked = false;
     for (std::size_t ei = 0; ei < part_placements_[s.part].size(); ++ei) {
       const auto& e = part_placements_[s.part][ei];
@@ -1167,7 +1242,9 @@ private:
       std::vector<P> mine;
       for (std::size_t i = 0; i < map.size(); ++i) if (map[i] != none) mine.push_back(image[i]);
       bool again = false;
-      for (const auto& other : seen) {
+      const CGAL::Interval_nt<false> key = Meet_index::key(mine);
+      for (std::size_t o : seen_index.candidates(key)) {
+        const std::vector<P>& other = seen[o];
         bool same = true;
         for (std::size_t i = 0; i < mine.size() && same; ++i)
           for (std::size_t c = 0; c < 3 && same; ++c) same = this->same(mine[i][c], other[i][c]);
@@ -1181,7 +1258,8 @@ private:
         note_undecided(false, "two placements of its part '" + plan_.parts[s.part].name + "' are not separated");
       }
       if (again) continue;
-      seen.push_back(mine);
+      seen.push_back(std::move(mine));
+      seen_index.add(key);
       for (std::size_t i = 0; i < map.size(); ++i)
         if (map[i] != none && std::find(s.places.begin(), s.places.end(), map[i]) != s.places.end()) x_[map[i]] = image[i];
       next(k, also(singular, e.singular_reason), undecided || e.undecided);
@@ -1305,15 +1383,33 @@ std::string placement_key(const Rigid_body_collection<Traits>& c, const typename
 {
   std::ostringstream os;
   auto field = [&os](const std::string& t) { os << t.size() << ':' << t << ';'; };  // length-prefixed: no two keys alike
+  // a rational exactly, in base 32 (linear time: the decimal form was a fifth of a 13-body
+  // tree's solve, the key being made again for each placement combination)
+  std::string digits;
+  auto exact = [&](const CGAL::Gmpq& q) {
+    for (mpz_srcptr z : {mpq_numref(q.mpq()), mpq_denref(q.mpq())}) {
+      digits.resize(mpz_sizeinbase(z, 32) + 2);
+      mpz_get_str(&digits[0], 32, z);
+      os << digits.c_str() << (z == mpq_numref(q.mpq()) ? '/' : ' ');
+    }
+  };
   field(b.name);
   for (std::size_t i = 0; i < b.points.size(); ++i) {
     field(c.label(b.points[i]));
-    if (b.has_coordinates[i])
-      os << '(' << exact_rational(Traits::x(b.coordinates[i])) << ' ' << exact_rational(Traits::y(b.coordinates[i])) << ' '
-         << exact_rational(Traits::z(b.coordinates[i])) << ')';
+    if (b.has_coordinates[i]) {
+      os << '(';
+      exact(exact_rational(Traits::x(b.coordinates[i])));
+      exact(exact_rational(Traits::y(b.coordinates[i])));
+      exact(exact_rational(Traits::z(b.coordinates[i])));
+      os << ')';
+    }
     os << '\n';
   }
-  for (const auto& d : b.squared_distances) os << d.a << '-' << d.b << ' ' << exact_rational(d.squared) << '\n';
+  for (const auto& d : b.squared_distances) {
+    os << d.a << '-' << d.b << ' ';
+    exact(exact_rational(d.squared));
+    os << '\n';
+  }
   for (const auto& o : b.orientations) os << o.a << ' ' << o.b << ' ' << o.c << ' ' << o.d << ' ' << int(o.sign) << '\n';
   for (const auto& g : b.rigid_groups) {
     os << "rigid";

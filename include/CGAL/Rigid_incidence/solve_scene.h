@@ -673,38 +673,6 @@ bool vanishes_along(const Sparse_polynomial<NT>& f, const std::vector<std::vecto
   return true;
 }
 
-// A solve along a solution plan as the solver's result for the whole system: its roots, and
-// its regions, those of a block with blocks after it named by their block (the box holds the
-// search box for the later blocks' variables: never taken for a possible multiple root)
-template <class IT>
-Solver_result<IT> solver_result_of_plan(const Plan_result<IT>& p, std::size_t blocks)
-{
-  Solver_result<IT> r;
-  for (const auto& x : p.roots) {
-    Solver_root<IT> y;
-    y.enclosure = x.enclosure;
-    y.approximation = x.approximation;
-    y.certified = x.certified;
-    y.on_boundary = x.on_boundary;
-    y.on_inequality_boundary = x.on_inequality_boundary;
-    r.roots.push_back(y);
-  }
-  for (const auto& u : p.unresolved) {
-    Solver_unresolved<IT> v;
-    v.kind = u.kind;
-    v.reason = u.block + 1 == blocks ? u.reason
-                                     : "block " + std::to_string(u.block + 1) + " of " + std::to_string(blocks) +
-                                           " of the solution plan (the blocks after it not solved there): " + u.reason;
-    v.box = u.box;
-    r.unresolved.push_back(v);
-  }
-  r.diagnosis = p.diagnosis;
-  r.statistics.boxes = p.boxes;
-  r.statistics.krawczyk_tests = p.krawczyk_tests;
-  r.statistics.seconds = p.seconds;
-  return r;
-}
-
 // A branch traced in one chart combination, as configurations.
 struct Scene_piece
 {

@@ -14,6 +14,7 @@
 #include <CGAL/Rigid_incidence/Solver_result.h>
 #include <CGAL/Rigid_incidence/Subdivision_solver.h>
 #include <CGAL/Rigid_incidence/internal/interval_ops.h>
+#include <CGAL/Rigid_incidence/internal/sparse_krawczyk.h>
 
 #include <algorithm>
 #include <chrono>
@@ -41,6 +42,9 @@ struct Plan_root
   bool certified = false;
   bool on_boundary = false;             ///< some block's root meets the search box's boundary
   bool on_inequality_boundary = false;  ///< some inequality may be 0 there
+  /// bits of the interval arithmetic that gave `enclosure` its width (53: double; more where
+  /// the whole system's Krawczyk test ran in `CGAL::Gmpfi` to reach the tolerance)
+  unsigned precision = 53;
 };
 
 /// \ingroup PkgRigidIncidenceSolver
@@ -68,11 +72,16 @@ struct Plan_result
   std::size_t boxes = 0;               ///< boxes over all block solves
   std::size_t krawczyk_tests = 0;      ///< Krawczyk tests over all block solves
   std::size_t refinements = 0;         ///< roots tightened on the whole system
-  /// of those, the ones tightened block after block instead (the whole system's Krawczyk test
-  /// failed, or could not run: the whole system beyond the dense arrays), each block's test with
-  /// the inputs the blocks before it tightened
-  std::size_t refinements_by_blocks = 0;
-  std::size_t refinements_failed = 0;  ///< of those, the ones neither way tightened (the blocks' certified enclosure is kept)
+  /// of those, the ones tightened by the Krawczyk test on the whole system's sparse
+  /// polynomials (the dense test could not run, the whole system beyond the dense arrays, or
+  /// left the root wider than the tolerance)
+  std::size_t refinements_sparse = 0;
+  /// of those, the ones that needed `CGAL::Gmpfi` (exact coefficients, MPFI available) to reach
+  /// the tolerance: the widths double precision reached were those of the chain of blocks
+  std::size_t refinements_multiprecision = 0;
+  /// of `refinements`, the ones left wider than the tolerance (certified, and as wide as the
+  /// precision allowed: `Plan_root::precision` says which)
+  std::size_t refinements_failed = 0;
   double seconds = 0;                  ///< wall-clock time
   /// every root certified and nothing unresolved
   bool complete() const
@@ -249,6 +258,7 @@ template <class IT, class NT> struct Plan_run
     if (b == plan.blocks().size()) {
       Plan_root<IT> r;
       r.enclosure = value;
+      r.precision = O::multiprecision ? P.precision : O::bits();
       if (certified && plan.blocks().size() > 1) {
         // the blocks' enclosures carry the widths of the inputs through the chain (interval
         // coefficients evaluated term by term): the Krawczyk test on the whole system, from
@@ -259,21 +269,26 @@ template <class IT, class NT> struct Plan_run
         if (!whole_too_large) try {
             if (auto t = Subdivision_solver<IT>(P).refine(*sys, value)) {
               r.enclosure = t->enclosure;
-              done = true;
+              done = widest(r.enclosure) <= P.tolerance;
             }
           } catch (const Input_error&) {
             // the whole system is beyond the solver's dense arrays (what the plan is for: two
             // stacked platforms): not tried again
             whole_too_large = true;
           }
-        // else block after block, each block's test with the inputs the blocks before it
-        // tightened; if that fails too, the blocks' certified enclosure stands
+        // else the same test on the sparse polynomials (any size), in more bits where double
+        // precision stops short; the blocks' certified enclosure stands where it cannot narrow
         if (!done) {
-          if (refine_by_blocks(r.enclosure)) ++result.refinements_by_blocks;
-          else ++result.refinements_failed;
+          ++result.refinements_sparse;
+          if (!refine_sparse(r.enclosure, r.precision)) ++result.refinements_failed;
+          else if (!O::multiprecision && r.precision > O::bits()) ++result.refinements_multiprecision;
         }
       }
-      for (const IT& v : value) r.approximation.push_back(0.5 * O::lower_double(v) + 0.5 * O::upper_double(v));
+      // (a point of the final enclosure: the blocks' product is wider than a refined root)
+      for (const IT& v : r.enclosure) {
+        const double m = 0.5 * O::lower_double(v) + 0.5 * O::upper_double(v);
+        r.approximation.push_back((std::min)((std::max)(m, O::lower_double(v)), O::upper_double(v)));
+      }
       r.certified = certified;
       r.on_boundary = boundary;
       r.on_inequality_boundary = ineq_boundary;
@@ -333,37 +348,57 @@ template <class IT, class NT> struct Plan_run
     solve_block_and_go(b, certified, boundary, ineq_boundary);
   }
 
-  // `at`, a root the blocks certified, tightened block after block by the Krawczyk test of
-  // each block with the inputs as the blocks before it tightened them (interval coefficients
-  // that narrow: the test then reaches the tolerance); false, `at` unchanged, if a test fails
-  bool refine_by_blocks(std::vector<IT>& at) const
+  static double widest(const std::vector<IT>& x)
   {
-    std::vector<IT> v = at;
-    for (const Plan_block& blk : plan.blocks()) {
-      const bool own = own_block(blk);
-      std::vector<IT> box;
-      for (std::size_t j : blk.variables) box.push_back(v[j]);
-      // (as in the solve: a thousandth of the tolerance for a block whose roots are the
-      // coefficients of others, whose widths its conditioning multiplies)
-      Subdivision_solver_parameters q = P;
-      if (&blk != &plan.blocks().back()) q.tolerance = P.tolerance * 1e-3;
-      std::optional<Solver_root<IT>> t;
-      try {
-        t = own ? Subdivision_solver<IT>(q).refine(block_system<NT>(blk, true, v), box)
-                : Subdivision_solver<IT>(q).refine(block_system<IT>(blk, false, v), box);
-      } catch (const Input_error&) {
-        return false;
+    double w = 0;
+    for (const IT& v : x) w = (std::max)(w, O::upper_double(v) - O::lower_double(v));
+    return w;
+  }
+
+  // `at`, a root the blocks certified (exactly one root of the whole system in it), narrowed
+  // by the Krawczyk test on the whole system's sparse polynomials (no dense arrays) in IT, and
+  // then, with exact coefficients and MPFI, in CGAL::Gmpfi at twice the bits while wider than
+  // the tolerance, up to `Subdivision_solver_parameters::maximal_precision`: the widths the
+  // chain of blocks leaves are those of double precision times the blocks' conditioning, not
+  // the coefficients'. `bits`: the precision of the last test that narrowed it. False: still
+  // wider than the tolerance.
+  bool refine_sparse(std::vector<IT>& at, unsigned& bits) const
+  {
+    try {
+      {
+        Solver_precision_guard<IT> guard(P.precision);
+        const Sparse_krawczyk_system<IT> whole(sys->equations);
+        std::vector<IT> x = at;
+        const Sparse_krawczyk_outcome o = sparse_krawczyk_tighten(whole, x, P.tolerance);
+        // (disjoint from a box the blocks proved holds a root: not possible in exact terms;
+        // the blocks' enclosure is kept)
+        if (o.empty) return false;
+        at = x;
+        if (o.width <= P.tolerance) return true;
       }
-      if (!t) return false;
-      // both hold the root: their intersection
-      for (std::size_t k = 0; k < blk.variables.size(); ++k) {
-        IT& x = v[blk.variables[k]];
-        const IT& y = t->enclosure[k];
-        x = O::make(O::lower(x) < O::lower(y) ? O::lower(y) : O::lower(x), O::upper(y) < O::upper(x) ? O::upper(y) : O::upper(x));
+#ifdef CGAL_USE_MPFI
+      if constexpr (!O::multiprecision && (std::is_same<NT, CGAL::Gmpq>::value || std::is_same<NT, double>::value)) {
+        for (unsigned b = 2 * O::bits(); b <= P.maximal_precision; b *= 2) {
+          typedef Interval_ops<CGAL::Gmpfi> G;
+          Solver_precision_guard<CGAL::Gmpfi> guard(b);
+          const Sparse_krawczyk_system<CGAL::Gmpfi> whole(sys->equations);
+          std::vector<CGAL::Gmpfi> x;
+          for (const IT& v : at) x.push_back(G::from(v));
+          const Sparse_krawczyk_outcome o = sparse_krawczyk_tighten(whole, x, P.tolerance);
+          if (o.empty) return false;
+          for (std::size_t j = 0; j < at.size(); ++j) {
+            const std::pair<double, double> e = x[j].to_interval();  // (outward)
+            at[j] = O::make((std::max)(O::lower(at[j]), e.first), (std::min)(O::upper(at[j]), e.second));
+          }
+          bits = b;
+          if (widest(at) <= P.tolerance) return true;
+        }
       }
+#endif
+    } catch (const Input_error&) {
+      // not square (a plan of a system with more equations than variables)
     }
-    at = v;
-    return true;
+    return widest(at) <= P.tolerance;
   }
 
   void solve_block_and_go(std::size_t b, bool certified, bool boundary, bool ineq_boundary)
@@ -455,6 +490,69 @@ void check_solvable(const Polynomial_system<NT>& system, const Solution_plan& pl
     throw Input_error(std::string(who) + ": inequality " + std::to_string(q) + " involves a variable no block solves");
 }
 
+// A solve along a solution plan as the solver's result for the whole system: its roots, and
+// its regions, those of a block with blocks after it named by their block (the box holds the
+// search box for the later blocks' variables: never taken for a possible multiple root)
+template <class IT>
+Solver_result<IT> solver_result_of_plan(const Plan_result<IT>& p, std::size_t blocks)
+{
+  Solver_result<IT> r;
+  for (const auto& x : p.roots) {
+    Solver_root<IT> y;
+    y.enclosure = x.enclosure;
+    y.approximation = x.approximation;
+    y.certified = x.certified;
+    y.on_boundary = x.on_boundary;
+    y.on_inequality_boundary = x.on_inequality_boundary;
+    r.roots.push_back(y);
+  }
+  for (const auto& u : p.unresolved) {
+    Solver_unresolved<IT> v;
+    v.kind = u.kind;
+    v.reason = u.block + 1 == blocks ? u.reason
+                                     : "block " + std::to_string(u.block + 1) + " of " + std::to_string(blocks) +
+                                           " of the solution plan (the blocks after it not solved there): " + u.reason;
+    v.box = u.box;
+    r.unresolved.push_back(v);
+  }
+  r.diagnosis = p.diagnosis;
+  r.statistics.boxes = p.boxes;
+  r.statistics.krawczyk_tests = p.krawczyk_tests;
+  r.statistics.seconds = p.seconds;
+  return r;
+}
+
+// The undecomposed solver's result in the plan's shape (one block; `precision`: bits of the
+// solver's arithmetic)
+template <class IT>
+Plan_result<IT> plan_result_of_solver(const Solver_result<IT>& s, unsigned precision)
+{
+  Plan_result<IT> r;
+  r.block_solves = 1;
+  r.boxes = s.statistics.boxes;
+  r.krawczyk_tests = s.statistics.krawczyk_tests;
+  r.diagnosis = s.diagnosis;
+  r.seconds = s.statistics.seconds;
+  for (const auto& x : s.roots) {
+    Plan_root<IT> y;
+    y.enclosure = x.enclosure;
+    y.approximation = x.approximation;
+    y.certified = x.certified;
+    y.on_boundary = x.on_boundary;
+    y.on_inequality_boundary = x.on_inequality_boundary;
+    y.precision = precision;
+    r.roots.push_back(y);
+  }
+  for (const auto& u : s.unresolved) {
+    Plan_unresolved<IT> v;
+    v.kind = u.kind;
+    v.reason = u.reason;
+    v.box = u.box;
+    r.unresolved.push_back(v);
+  }
+  return r;
+}
+
 } // namespace internal
 
 /*!
@@ -522,7 +620,7 @@ struct Plan_charts_result
   /// solved in its own charts, had none for it
   std::vector<Plan_chart_roots<IT>> found;
   /// the totals over every block solve (`block_solves`, `boxes`, `krawczyk_tests`,
-  /// `refinements`, `refinements_by_blocks`, `refinements_failed`, `seconds`) and the first
+  /// `refinements`, `refinements_sparse`, `refinements_multiprecision`, `refinements_failed`, `seconds`) and the first
   /// diagnosis met; its `roots`
   /// and `unresolved` are empty (they are in `found`)
   Plan_result<IT> totals;
