@@ -3,7 +3,7 @@
 # Run as root (or with sudo available). Extra packages can be passed as arguments.
 set -euo pipefail
 packages=(cmake g++ make libcgal-dev libgmp-dev libmpfr-dev libmpfi-dev libeigen3-dev
-          libboost-graph-dev nlohmann-json3-dev doxygen graphviz "$@")
+          libboost-graph-dev nlohmann-json3-dev libtbb-dev doxygen graphviz "$@")
 missing=()
 for p in "${packages[@]}"; do
   if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then

@@ -37,11 +37,11 @@ static const char* usage_text =
   "                         [--coefficients auto|exact|interval] [--kernel exact|epick|epeck]\n"
   "  rigid_incidence solve SCENE.json [--json] [--tolerance EPS] [--precision BITS] [--fast]\n"
   "                        [--svg FILE] [--plot A.x,B.z] [--near CONFIG.json] [--max-boxes N]\n"
-  "                        [--max-seconds S] [--quiet] [--no-plan] [--kernel K]\n"
+  "                        [--max-seconds S] [--quiet] [--no-plan] [--threads N] [--kernel K]\n"
   "  rigid_incidence family SCENE.json [--json] [--svg FILE] [--samples K] [--tolerance EPS]\n"
   "                        [--precision BITS] [--max-boxes N] [--kernel K]\n"
   "  rigid_incidence solve-system FILE [--json] [--tolerance EPS] [--precision BITS] [--fast]\n"
-  "                        [--max-boxes N] [--dot FILE] [--no-plan]\n"
+  "                        [--max-boxes N] [--dot FILE] [--no-plan] [--threads N]\n"
   "  rigid_incidence --help\n"
   "\n"
   "Commands:\n"
@@ -101,7 +101,9 @@ static const char* usage_text =
   "            whole solve (what is not done by then is reported, the answer not complete);\n"
   "            a progress line on standard error when it is a terminal (--quiet: none);\n"
   "            a reduced system of several blocks (its solution plan) is solved block after\n"
-  "            block (--no-plan: whole, for comparison);\n"
+  "            block (--no-plan: whole, for comparison); --threads N: threads for the\n"
+  "            independent pieces (chart combinations, branches of a plan; default: every\n"
+  "            core; 1: sequential), the same answer in the same order with any number;\n"
   "            Ctrl-C (SIGINT) or SIGTERM stops the solve and prints the partial answer,\n"
   "            incomplete, with exit status 130 or 143; --svg FILE: the configurations side by\n"
   "            side as line drawings; --near CONFIG.json: order the configurations by their\n"
@@ -565,6 +567,18 @@ int main(int argc, char** argv)
       if (o.command != "solve") { std::cerr << "rigid_incidence: --max-seconds is an option of solve\n"; return 1; }
       try {
         o.solve.max_seconds = solve_command::parse_positive(a, args[++i]);
+      } catch (const RI::Input_error& e) {
+        std::cerr << "rigid_incidence: " << e.what() << "\n";
+        return 1;
+      }
+    } else if (a == "--threads") {
+      if (i + 1 >= args.size()) { std::cerr << "rigid_incidence: " << a << " needs a value\n"; return 1; }
+      if (o.command != "solve" && o.command != "solve-system") { std::cerr << "rigid_incidence: --threads is an option of solve and solve-system\n"; return 1; }
+      const std::string& v = args[++i];
+      try {
+        const double k = solve_command::parse_positive(a, v);
+        if (k != std::floor(k) || k > 1024) throw RI::Input_error(a + ": '" + v + "' is not a whole number of threads (1 .. 1024)");
+        o.solve.threads = unsigned(k);
       } catch (const RI::Input_error& e) {
         std::cerr << "rigid_incidence: " << e.what() << "\n";
         return 1;

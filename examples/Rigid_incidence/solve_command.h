@@ -44,6 +44,7 @@ struct Solve_options
   std::string plot;  // --plot A.x,B.z: the coordinates plotted against each other for curves
   double max_seconds = 0;  // --max-seconds: the whole solve (0: no limit)
   bool quiet = false;      // --quiet: no progress line
+  unsigned threads = 0;    // --threads: 0, every core (Subdivision_solver_parameters::threads)
 };
 
 // SIGINT and SIGTERM during a solve: the solve stops as at its time limit and the partial
@@ -445,6 +446,7 @@ RI::Scene_solve_result run(const RI::Scene& scene, const RI::Rigid_body_collecti
   p.solver.tolerance = o.tolerance;
   p.solver.precision = o.precision;
   p.solver.fast = o.fast;
+  p.solver.threads = o.threads;
   if (o.max_boxes) p.solver.maximal_boxes = o.max_boxes;
   p.maximal_seconds = o.max_seconds;
   p.solve_with_plan = !o.no_plan;
@@ -602,7 +604,7 @@ int solve(const RI::Scene& scene, const RI::Rigid_body_collection<Traits>& input
                   {"duplicates_merged", st.duplicates}, {"spurious_rejected", st.spurious}, {"curve_boxes", st.curve_boxes},
                   {"placements_excluded", st.placements_excluded},
                   {"planned_systems", st.planned_systems}, {"block_solves", st.block_solves}, {"excluded_by_plan", st.excluded_by_plan},
-                  {"coefficient_width", st.coefficient_width},
+                  {"coefficient_width", st.coefficient_width}, {"threads", st.threads},
                   {"seconds", {{"analysis", analysis_seconds}, {"reduce", st.reduce_seconds}, {"solve", st.solve_seconds},
                                {"verify", st.verify_seconds}}}};
     std::cout << j.dump(2) << "\n";
@@ -696,7 +698,9 @@ int solve(const RI::Scene& scene, const RI::Rigid_body_collection<Traits>& input
                                          " combinations excluded by a block without roots)"
                                    : std::string())
             << "; seconds: analysis " << analysis_seconds << ", reduce "
-            << st.reduce_seconds << ", solve " << st.solve_seconds << ", verify " << st.verify_seconds << "\n";
+            << st.reduce_seconds << ", solve " << st.solve_seconds << ", verify " << st.verify_seconds;
+  if (st.threads > 1) std::cout << " (summed over " << st.threads << " threads)";
+  std::cout << "\n";
   return signal_received && !r.complete() ? 128 + int(signal_received) : 0;  // (a signal after the last combination cut nothing)
 }
 

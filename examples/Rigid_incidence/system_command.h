@@ -64,6 +64,7 @@ int run(const RI::Polynomial_system_file& file, const RI::Solution_plan& plan, c
   p.tolerance = o.solve.tolerance;
   p.precision = o.solve.precision;
   p.fast = o.solve.fast;
+  p.threads = o.solve.threads;
   if (o.solve.max_boxes > 0) p.maximal_boxes = o.solve.max_boxes;
   const auto t0 = std::chrono::steady_clock::now();
   std::string diagnosis;
@@ -181,6 +182,7 @@ int run(const RI::Polynomial_system_file& file, const RI::Solution_plan& plan, c
     j["stats"] = {{"blocks", plan.blocks().size()},
                   {"largest_block", plan.largest_block()},
                   {"block_solves", r.block_solves},
+                  {"threads", RI::internal::worker_threads(o.solve.threads)},
                   {"boxes", r.boxes},
                   {"krawczyk_tests", r.krawczyk_tests},
                   {"refinements", r.refinements},

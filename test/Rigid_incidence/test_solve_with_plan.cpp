@@ -18,7 +18,10 @@
 // its own chart group, chart 0 its box's lower half and chart 1 its upper half: for every
 // assignment of charts, what it found is what solve_with_plan() finds on that assignment's
 // system (the oracle), with fewer block solves, and over all assignments every planted root;
-// malformed input throws Input_error.
+// with 2 and 3 threads (Subdivision_solver_parameters::threads), solve_with_plan() and
+// solve_with_plan_over_charts() give what one thread gives, bound for bound and in the same
+// order, with the same statistics (in double and in Gmpfi, whose default precision is per
+// thread); malformed input throws Input_error.
 // Usage: test_solve_with_plan [systems [seed]] (or RI_TEST_SYSTEMS=systems in the environment)
 
 #include "planted_systems.h"
@@ -65,6 +68,41 @@ static std::vector<Point> expected_roots(const Planted& p, const Affine* g)
   return r;
 }
 
+// a and b the same, bound for bound and in the same order (a run on several threads against
+// one on one thread)
+template <class IT>
+static bool same_plan_result(const RI::Plan_result<IT>& a, const RI::Plan_result<IT>& b, std::string& why)
+{
+  auto same_box = [](const std::vector<IT>& x, const std::vector<IT>& y) {
+    if (x.size() != y.size()) return false;
+    for (std::size_t j = 0; j < x.size(); ++j)
+      if (!(x[j].inf() == y[j].inf() && x[j].sup() == y[j].sup())) return false;
+    return true;
+  };
+  if (a.roots.size() != b.roots.size()) { why = std::to_string(a.roots.size()) + " roots against " + std::to_string(b.roots.size()); return false; }
+  for (std::size_t i = 0; i < a.roots.size(); ++i)
+    if (!same_box(a.roots[i].enclosure, b.roots[i].enclosure) || a.roots[i].approximation != b.roots[i].approximation ||
+        a.roots[i].certified != b.roots[i].certified || a.roots[i].precision != b.roots[i].precision) {
+      why = "root " + std::to_string(i) + " differs";
+      return false;
+    }
+  if (a.unresolved.size() != b.unresolved.size()) { why = "regions differ in number"; return false; }
+  for (std::size_t i = 0; i < a.unresolved.size(); ++i)
+    if (a.unresolved[i].block != b.unresolved[i].block || a.unresolved[i].reason != b.unresolved[i].reason ||
+        !same_box(a.unresolved[i].box, b.unresolved[i].box)) {
+      why = "region " + std::to_string(i) + " differs";
+      return false;
+    }
+  if (a.block_solves != b.block_solves || a.boxes != b.boxes || a.krawczyk_tests != b.krawczyk_tests || a.refinements != b.refinements ||
+      a.refinements_sparse != b.refinements_sparse || a.refinements_multiprecision != b.refinements_multiprecision ||
+      a.refinements_failed != b.refinements_failed || a.diagnosis != b.diagnosis) {
+    why = "statistics differ (" + std::to_string(a.block_solves) + " block solves, " + std::to_string(a.boxes) + " boxes against " +
+          std::to_string(b.block_solves) + ", " + std::to_string(b.boxes) + ")";
+    return false;
+  }
+  return true;
+}
+
 template <class Root>
 static void check_roots(const std::vector<Root>& roots, const std::vector<Point>& expected, const std::string& name)
 {
@@ -93,7 +131,7 @@ int main(int argc, char** argv)
   std::cout << "test_solve_with_plan: seed " << seed << ", " << systems << " systems\n";
   Rng rng(seed);
   std::size_t solved = 0, roots = 0, blocks = 0, plan_boxes = 0, plain_boxes = 0, plan_boxes_compared = 0, undecomposed_incomplete = 0, refinements = 0, refinements_failed = 0, sparse_refinements = 0, kept = 0, gmpfi_runs = 0,
-              interval_runs = 0, chart_runs = 0, chart_block_solves = 0, chart_separate_solves = 0;
+              interval_runs = 0, chart_runs = 0, chart_block_solves = 0, chart_separate_solves = 0, threaded_runs = 0, pending_regions = 0;
   bool refusal_checked = false;
   for (int s = 0; s < systems; ++s) {
     // blocks of 1 to 3 variables, 2 to 6 variables in all, 1 to 3 factors per equation
@@ -126,6 +164,28 @@ int main(int argc, char** argv)
     CHECK(pr.complete(), name << ": the plan's solve is not complete");
     check_roots(pr.roots, all, name + " with the plan");
     plan_boxes += pr.boxes;
+    if (plan.blocks().size() > 1 && s % 2 == 1) {
+      for (unsigned t : {2u, 3u}) {
+        RI::Subdivision_solver_parameters prm;
+        prm.threads = t;
+        std::string why;
+        CHECK(same_plan_result(RI::solve_with_plan(p.system, plan, prm), pr, why),
+              name << ": with " << t << " threads, not what one thread gives: " << why);
+      }
+      {
+        // a budget of 12 boxes per block solve: regions left pending in many branches, whose
+        // order (unlike the roots', sorted) is the order the branches are merged in
+        RI::Subdivision_solver_parameters small;
+        small.maximal_boxes = 12;
+        const auto one = RI::solve_with_plan(p.system, plan, small);
+        small.threads = 2;
+        std::string why;
+        CHECK(same_plan_result(RI::solve_with_plan(p.system, plan, small), one, why),
+              name << ": with 12 boxes per block solve and 2 threads, not what one thread gives: " << why);
+        pending_regions += one.unresolved.size();
+      }
+      ++threaded_runs;
+    }
     if (plan.blocks().size() > 1 && s % 3 == 0) {
       const RI::Polynomial_system<I> ip = with_interval_coefficients(p.system);
       auto ir = RI::solve_with_plan(ip, RI::Solution_plan(ip));
@@ -147,6 +207,17 @@ int main(int argc, char** argv)
       for (std::size_t j = 0; j < n; ++j) group[j] = j;
       const std::function<RI::Polynomial_system<Q>(const std::vector<int>&)> f = make;
       const auto oc = RI::solve_with_plan_over_charts<CGAL::Interval_nt<false>, Q>(plan, group, std::vector<int>(n, 2), f);
+      {
+        RI::Subdivision_solver_parameters prm;
+        prm.threads = 2;
+        const auto oc2 = RI::solve_with_plan_over_charts<CGAL::Interval_nt<false>, Q>(plan, group, std::vector<int>(n, 2), f, prm);
+        std::string why;
+        CHECK(oc2.found.size() == oc.found.size(), name << ": over charts with 2 threads, " << oc2.found.size() << " assignments, one thread " << oc.found.size());
+        for (std::size_t i = 0; i < oc.found.size() && i < oc2.found.size(); ++i)
+          CHECK(oc2.found[i].charts == oc.found[i].charts && same_plan_result(oc2.found[i].result, oc.found[i].result, why),
+                name << ": over charts with 2 threads, assignment " << i << " differs: " << why);
+        CHECK(same_plan_result(oc2.totals, oc.totals, why), name << ": over charts with 2 threads, totals differ: " << why);
+      }
       std::vector<int> charts(n, 0);
       std::size_t separate_solves = 0, found_roots = 0;
       std::size_t next = 0;  // into oc.found, in lexicographic order of the charts
@@ -263,6 +334,12 @@ int main(int argc, char** argv)
       prm.precision = 80;
       auto gr = RI::solve_with_plan<CGAL::Gmpfi>(p.system, plan, prm);
       CHECK(gr.complete(), name << ": the plan's solve in Gmpfi is not complete");
+      if (plan.blocks().size() > 1) {  // (the workers must compute at 80 bits too)
+        prm.threads = 2;
+        std::string why;
+        CHECK(same_plan_result(RI::solve_with_plan<CGAL::Gmpfi>(p.system, plan, prm), gr, why),
+              name << ": in Gmpfi with 2 threads, not what one thread gives: " << why);
+      }
       check_roots(gr.roots, all, name + " with the plan in Gmpfi");
       ++gmpfi_runs;
     }
@@ -271,6 +348,8 @@ int main(int argc, char** argv)
   CHECK(solved >= std::size_t(systems) / 2, "only " << solved << " systems were usable");
   CHECK(interval_runs > 0 || systems < 20, "no system of several blocks solved with interval coefficients");
   CHECK(chart_runs > 0 || systems < 20, "no system solved over charts");
+  CHECK(threaded_runs > 0 || systems < 20, "no system of several blocks solved on several threads");
+  CHECK(pending_regions > 0 || systems < 20, "no region left pending with 12 boxes per block solve");
   CHECK(chart_block_solves < chart_separate_solves || systems < 20, "over charts: no block solve saved");
   CHECK(refinements_failed * 100 <= refinements, refinements_failed << " of " << refinements << " whole-system refinements failed");
 
@@ -322,7 +401,8 @@ int main(int argc, char** argv)
             << " and ran out of boxes on " << undecomposed_incomplete << "); " << refinements << " roots refined on the whole system ("
             << sparse_refinements << " by the sparse test, " << refinements_failed << " left wider than the tolerance); " << kept << " roots kept by the inequalities; " << gmpfi_runs << " Gmpfi runs, "
             << interval_runs << " with interval coefficients; " << chart_runs << " over charts (box halves): " << chart_block_solves
-            << " block solves, " << chart_separate_solves << " for each assignment alone\n";
+            << " block solves, " << chart_separate_solves << " for each assignment alone; " << threaded_runs
+            << " solved again on 2 and 3 threads (" << pending_regions << " regions left pending with 12 boxes, in the same order; oneTBB " << (RI::internal::parallel_available() ? "on" : "off: sequential") << ")\n";
   std::cout << checks << " checks, " << failures << " failures\n";
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -74,6 +74,16 @@ struct Subdivision_solver_parameters
   /// A flag another thread or a signal handler may set (null: none): the solve stops at the
   /// next box once it reads true, and what is left is `PENDING` ("interrupted").
   const std::atomic<bool>* interrupt = nullptr;
+  /// Threads for the independent pieces of a solve (oneTBB): the branches of a solution plan
+  /// (each root of a block, each chart of a block's own hinges) in `solve_with_plan()` and
+  /// `solve_with_plan_over_charts()`, the chart and placement combinations of `solve_scene()`.
+  /// 1: the calling thread only; 0: every core of the machine (never more than oneTBB's default
+  /// concurrency, the cores it may use). The answer is the same, in the
+  /// same order, with any number (what each piece finds is merged in the order of a sequential
+  /// run); only a time limit or an interrupt can stop different pieces. Without oneTBB
+  /// (`CGAL_LINKED_WITH_TBB` not defined, as CGAL's `CGAL::TBB_support` target defines it)
+  /// every solve runs on the calling thread. One subdivision (one box tree) is sequential.
+  unsigned threads = 1;
   /// Fast, non-certified mode: plain double subdivision, Newton polish, no existence proof.
   /// Roots come back with `certified == false`.
   bool fast = false;

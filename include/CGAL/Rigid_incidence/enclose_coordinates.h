@@ -25,6 +25,7 @@
 #include <array>
 #include <cmath>
 #include <deque>
+#include <mutex>
 #include <limits>
 #include <map>
 #include <memory>
@@ -1586,7 +1587,7 @@ Exact_placements<IT> exact_placements(const Placement_plan& plan, std::size_t ma
   return x;  // TIMED_OUT: not done, no `why` (the caller says the limit)
 }
 
-// The enumeration of enumerate_placements(), shared with the per-thread cache.
+// The enumeration of enumerate_placements(), shared through a cache of the last 32.
 template <class IT, class Traits>
 std::shared_ptr<const Placement_enumeration<IT>> cached_placements(const Rigid_body_collection<Traits>& c, std::size_t body,
                                                                   std::size_t max_placements)
@@ -1600,8 +1601,15 @@ std::shared_ptr<const Placement_enumeration<IT>> cached_placements(const Rigid_b
     key += " " + std::to_string(start);
   }
 #endif
-  thread_local std::deque<std::pair<std::string, std::shared_ptr<const Placement_enumeration<IT>>>> cache;
-  for (const auto& e : cache) if (e.first == key) return e.second;
+  // one cache for every thread (the parallel solves build systems of one scene on several):
+  // looked up and filled under its lock, an enumeration computed outside it (two threads may
+  // both compute one; the first stored is kept, and they are equal)
+  static std::mutex cache_mutex;
+  static std::deque<std::pair<std::string, std::shared_ptr<const Placement_enumeration<IT>>>> cache;
+  {
+    std::lock_guard<std::mutex> lock(cache_mutex);
+    for (const auto& e : cache) if (e.first == key) return e.second;
+  }
 
   Placement_plan plan = Placement_planner<Traits>(c, b).run();
   auto out = std::make_shared<Placement_enumeration<IT>>();
@@ -1674,6 +1682,8 @@ std::shared_ptr<const Placement_enumeration<IT>> cached_placements(const Rigid_b
                           (out->decided_exactly ? std::string("exactly") : "in intervals at " + std::to_string(out->precision) + " bits") + ")";
   }
   if (!cacheable) return out;  // (a later solve decides it again)
+  std::lock_guard<std::mutex> lock(cache_mutex);
+  for (const auto& e : cache) if (e.first == key) return e.second;
   cache.emplace_back(key, out);
   if (cache.size() > 32) cache.pop_front();
   return out;

@@ -31,6 +31,7 @@
 #include <chrono>
 #include <functional>
 #include <iomanip>
+#include <mutex>
 #include <cmath>
 #include <array>
 #include <optional>
@@ -125,8 +126,10 @@ struct Scene_solve_parameters
   /// reduced system is square with more than one block, in a first pass. false: each chart
   /// combination solved along its plan alone (the tests' oracle).
   bool plan_over_charts = true;
-  /// Called after each combination of charts and placements is solved (empty: never), from
-  /// the thread that called `solve_scene()`; the command-line tool prints it on a terminal.
+  /// Called after each combination of charts and placements is solved (empty: never), one call
+  /// at a time and in the order of the combinations, from the thread that called
+  /// `solve_scene()` or, with `solver.threads` other than 1, from any thread of the solve; the
+  /// command-line tool prints it on a terminal.
   std::function<void(const Scene_solve_progress&)> progress;
 };
 
@@ -205,6 +208,9 @@ struct Scene_curve
 /// Statistics of `solve_scene()`.
 struct Scene_solve_statistics
 {
+  /// threads the solve ran on (`Subdivision_solver_parameters::threads`; 1 without oneTBB);
+  /// the seconds below are summed over them
+  unsigned threads = 1;
   std::size_t chart_combinations = 0;      ///< systems solved (chart combinations x placements)
   std::size_t excluded_at_once = 0;        ///< of those, excluded on their first box
   double excluded_at_once_seconds = 0;     ///< solver time spent on those
@@ -1077,6 +1083,8 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
       st.coefficient_width = width;  // (of the systems solved again)
     }
   }
+  const unsigned threads = internal::worker_threads(parameters.solver.threads);
+  st.threads = threads;
   std::size_t done = 0;
   bool plan_cut = false;  // a plan over the charts stopped inside (its combinations not counted done)
   const char* stopped = nullptr;
@@ -1099,6 +1107,7 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
     // the system of chart 0 of this placement combination, which the others are made from
     std::optional<Reduced_system<Traits, NT>> base;
     bool base_tried = !parameters.change_charts;
+    std::mutex width_mutex;
     // a reduced system with the orientation inequalities
     auto system_of = [&](const Reduced_system<Traits, NT>& r) {
       Polynomial_system<NT> sys = r.system();
@@ -1108,7 +1117,11 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
         sys.inequality_labels.push_back("orientation " + parameters.inequalities[q].points[0] + " " + parameters.inequalities[q].points[1] +
                                         " " + parameters.inequalities[q].points[2] + " " + parameters.inequalities[q].points[3]);
       }
-      if constexpr (!std::is_same<NT, CGAL::Gmpq>::value) st.coefficient_width = (std::max)(st.coefficient_width, internal::coefficient_width(sys));
+      if constexpr (!std::is_same<NT, CGAL::Gmpq>::value) {
+        const double w = internal::coefficient_width(sys);
+        std::lock_guard<std::mutex> lock(width_mutex);  // (built on several threads)
+        st.coefficient_width = (std::max)(st.coefficient_width, w);
+      }
       return sys;
     };
     // what the solve, or the tracer, of one chart combination found: configurations, curves,
@@ -1481,77 +1494,116 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
       if (changes) base.emplace(std::move(*zero));
       report();  // (chart 0's system built: on a large scene the first visible step)
     }
-    std::vector<int> charts(radix_c.size(), 0);
-    do {
-      if (retry && !retry->only.count(Scene_combination(placements, charts))) continue;
-      if ((stopped = stop_reason())) break;
-      auto t1 = Clock::now();
-      if (!base_tried) {
-        base_tried = true;
-        base.emplace(c, tree, selection, std::vector<int>(radix_c.size(), 0), Rotation_form::QUATERNION_CHARTS, placements);
-        if (!base->changes_charts()) base.reset();
-      }
-      Reduced_system<Traits, NT> r = base ? Reduced_system<Traits, NT>(*base, charts)
-                                                : Reduced_system<Traits, NT>(c, tree, selection, charts, Rotation_form::QUATERNION_CHARTS, placements);
-      Polynomial_system<NT> sys = system_of(r);
-      st.reduce_seconds += since(t1);
-      auto t2 = Clock::now();
+    // Each chart combination alone, built and solved in parallel (parameters.solver.threads,
+    // up to four combinations per thread under way), what each found processed here, one at a
+    // time, in the order of the combinations (internal::ordered_pipeline()): the answer does not
+    // depend on the threads. The stop is checked before each combination starts.
+    std::vector<int> next_charts(radix_c.size(), 0);
+    bool more_charts = true;
+    // what one combination's build and solve give (touched by its own thread only)
+    struct Combination_work
+    {
+      std::vector<int> charts;
+      std::optional<Reduced_system<Traits, NT>> r;
+      Polynomial_system<NT> sys;
       Solver_result<IT> res;
-      if (one_dof) {
-        // traced below
-      } else if (sys.number_of_variables() == 0) {
-        // one body, or bodies fixed by the placements alone: the configuration is the
-        // placement itself (each placement variant is one)
-        Solver_root<IT> root;
-        root.certified = true;
-        res.roots.push_back(root);
-      } else {
-        // what is left of the whole solve's time, and its interrupt, bound this solve too
-        Subdivision_solver_parameters sp = parameters.solver;
-        if (!sp.interrupt) sp.interrupt = parameters.interrupt;
-        if (parameters.maximal_seconds > 0) {
-          const double left = (std::max)(parameters.maximal_seconds - since(started), 1e-3);
-          sp.maximal_seconds = sp.maximal_seconds > 0 ? (std::min)(sp.maximal_seconds, left) : left;
+      double reduce_seconds = 0, solve_seconds = 0;
+      bool planned = false;
+      std::size_t block_solves = 0, plan_boxes = 0, plan_krawczyk_tests = 0;
+    };
+    auto next = [&](Combination_work& w) {
+      while (more_charts) {
+        std::vector<int> ch = next_charts;
+        more_charts = internal::next_combination(next_charts, radix_c);
+        if (retry && !retry->only.count(Scene_combination(placements, ch))) continue;
+        if ((stopped = stop_reason())) return more_charts = false;
+        if (!base_tried) {
+          auto t1 = Clock::now();
+          base_tried = true;
+          base.emplace(c, tree, selection, std::vector<int>(radix_c.size(), 0), Rotation_form::QUATERNION_CHARTS, placements);
+          if (!base->changes_charts()) base.reset();
+          st.reduce_seconds += since(t1);
         }
-        bool planned = false;
-        if (parameters.solve_with_plan && sys.number_of_equations() == sys.number_of_variables()) {
-          const Solution_plan plan(sys);
-          if (plan.blocks().size() > 1 && plan.over_determined_equations().empty() && plan.under_determined_variables().empty() &&
-              plan.unattached_inequalities().empty()) {
-            try {
-              const Plan_result<IT> pr = solve_with_plan<IT>(sys, plan, sp);
-              if (pr.diagnosis.empty()) {
-                res = internal::solver_result_of_plan(pr, plan.blocks().size());
-                planned = true;
-                ++st.planned_systems;
-                st.block_solves += pr.block_solves;
-              } else {
-                // the whole system's solve diagnoses, and traces, what a block could not
-                st.boxes += pr.boxes;
-                st.krawczyk_tests += pr.krawczyk_tests;
+        w.charts = std::move(ch);
+        return true;
+      }
+      return false;
+    };
+    internal::ordered_pipeline<Combination_work>(threads, 4 * std::size_t(threads), next, [&](Combination_work& w) {
+        const std::vector<int>& charts = w.charts;
+        auto t1 = Clock::now();
+        w.r.emplace(base ? Reduced_system<Traits, NT>(*base, charts)
+                         : Reduced_system<Traits, NT>(c, tree, selection, charts, Rotation_form::QUATERNION_CHARTS, placements));
+        w.sys = system_of(*w.r);
+        const Polynomial_system<NT>& sys = w.sys;
+        Solver_result<IT>& res = w.res;
+        w.reduce_seconds = since(t1);
+        auto t2 = Clock::now();
+        if (one_dof) {
+          // traced below
+        } else if (sys.number_of_variables() == 0) {
+          // one body, or bodies fixed by the placements alone: the configuration is the
+          // placement itself (each placement variant is one)
+          Solver_root<IT> root;
+          root.certified = true;
+          res.roots.push_back(root);
+        } else {
+          // what is left of the whole solve's time, and its interrupt, bound this solve too
+          Subdivision_solver_parameters sp = parameters.solver;
+          if (!sp.interrupt) sp.interrupt = parameters.interrupt;
+          if (parameters.maximal_seconds > 0) {
+            const double left = (std::max)(parameters.maximal_seconds - since(started), 1e-3);
+            sp.maximal_seconds = sp.maximal_seconds > 0 ? (std::min)(sp.maximal_seconds, left) : left;
+          }
+          bool planned = false;
+          if (parameters.solve_with_plan && sys.number_of_equations() == sys.number_of_variables()) {
+            const Solution_plan plan(sys);
+            if (plan.blocks().size() > 1 && plan.over_determined_equations().empty() && plan.under_determined_variables().empty() &&
+                plan.unattached_inequalities().empty()) {
+              try {
+                const Plan_result<IT> pr = solve_with_plan<IT>(sys, plan, sp);
+                if (pr.diagnosis.empty()) {
+                  res = internal::solver_result_of_plan(pr, plan.blocks().size());
+                  planned = true;
+                  w.planned = true;
+                  w.block_solves = pr.block_solves;
+                } else {
+                  // the whole system's solve diagnoses, and traces, what a block could not
+                  w.plan_boxes = pr.boxes;
+                  w.plan_krawczyk_tests = pr.krawczyk_tests;
+                }
+              } catch (const Input_error&) {
+                // (an equation vanishes once earlier roots are substituted: solved whole)
               }
-            } catch (const Input_error&) {
-              // (an equation vanishes once earlier roots are substituted: solved whole)
             }
           }
+          if (!planned) res = Subdivision_solver<IT>(sp).solve(sys);
         }
-        if (!planned) res = Subdivision_solver<IT>(sp).solve(sys);
-      }
-      double ts = since(t2);
-      st.solve_seconds += ts;
-      ++st.chart_combinations;
-      st.boxes += res.statistics.boxes;
-      st.krawczyk_tests += res.statistics.krawczyk_tests;
-      if (res.statistics.boxes == 1 && res.roots.empty() && res.unresolved.empty()) {
-        ++st.excluded_at_once;
-        st.excluded_at_once_seconds += ts;
-      }
-      auto t3 = Clock::now();
-      process(charts, r, sys, res);
-      st.verify_seconds += since(t3);
-      ++done;
-      report();
-    } while (internal::next_combination(charts, radix_c));
+        w.solve_seconds = since(t2);
+      }, [&](Combination_work& w) {
+        const Solver_result<IT>& res = w.res;
+        const double ts = w.solve_seconds;
+        st.reduce_seconds += w.reduce_seconds;
+        st.solve_seconds += ts;
+        if (w.planned) {
+          ++st.planned_systems;
+          st.block_solves += w.block_solves;
+        }
+        st.boxes += w.plan_boxes;
+        st.krawczyk_tests += w.plan_krawczyk_tests;
+        ++st.chart_combinations;
+        st.boxes += res.statistics.boxes;
+        st.krawczyk_tests += res.statistics.krawczyk_tests;
+        if (res.statistics.boxes == 1 && res.roots.empty() && res.unresolved.empty()) {
+          ++st.excluded_at_once;
+          st.excluded_at_once_seconds += ts;
+        }
+        auto t3 = Clock::now();
+        process(w.charts, *w.r, w.sys, w.res);
+        st.verify_seconds += since(t3);
+        ++done;
+        report();
+      });
   } while (!stopped && internal::next_combination(placements, radix_p));
   // a stop the solver met inside the last combination (its rest left pending for it) is a
   // stop of the whole solve too

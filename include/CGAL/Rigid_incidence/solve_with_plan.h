@@ -14,11 +14,14 @@
 #include <CGAL/Rigid_incidence/Solver_result.h>
 #include <CGAL/Rigid_incidence/Subdivision_solver.h>
 #include <CGAL/Rigid_incidence/internal/interval_ops.h>
+#include <CGAL/Rigid_incidence/internal/parallel.h>
 #include <CGAL/Rigid_incidence/internal/sparse_krawczyk.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <functional>
+#include <memory>
 #include <map>
 #include <optional>
 #include <stdexcept>
@@ -162,13 +165,60 @@ template <class IT, class NT> struct Plan_run
   std::vector<IT> value;
   std::vector<char> known;
   std::vector<char> certified_so_far, boundary_so_far, ineq_boundary_so_far;
-  bool whole_too_large = false;  // refine() refused the whole system: not tried again
+  // refine() refused the whole system (too large for its dense arrays: the same for every root
+  // and chart): not tried again, by any branch
+  std::shared_ptr<std::atomic<bool>> whole_too_large = std::make_shared<std::atomic<bool>>(false);
 
   const std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
+  Plan_run(const Plan_run&) = delete;
 
   Plan_run(const Polynomial_system<NT>& s, const Solution_plan& p, const Subdivision_solver_parameters& q)
       : sys(&s), plan(p), P(q), value(s.number_of_variables()), known(s.number_of_variables(), 0)
   {
+  }
+  // a branch of `o`: its state (the system, charts, values so far), nothing found yet
+  struct Branch_tag {};
+  Plan_run(const Plan_run& o, Branch_tag)
+      : sys(o.sys), plan(o.plan), P(o.P), group(o.group), radix(o.radix), make_system(o.make_system), charts(o.charts),
+        assigned(o.assigned), value(o.value), known(o.known), whole_too_large(o.whole_too_large), start(o.start)
+  {
+  }
+  // what a branch found, after what this run found (the order of a sequential run)
+  void merge(Plan_run& o)
+  {
+    Plan_result<IT>& a = result;
+    Plan_result<IT>& b = o.result;
+    for (auto& r : b.roots) a.roots.push_back(std::move(r));
+    for (auto& u : b.unresolved) a.unresolved.push_back(std::move(u));
+    if (a.diagnosis.empty()) a.diagnosis = b.diagnosis;
+    a.block_solves += b.block_solves;
+    a.boxes += b.boxes;
+    a.krawczyk_tests += b.krawczyk_tests;
+    a.refinements += b.refinements;
+    a.refinements_sparse += b.refinements_sparse;
+    a.refinements_multiprecision += b.refinements_multiprecision;
+    a.refinements_failed += b.refinements_failed;
+    for (auto& x : o.by_charts) {
+      Plan_result<IT>& t = by_charts[x.first];
+      for (auto& r : x.second.roots) t.roots.push_back(std::move(r));
+      for (auto& u : x.second.unresolved) t.unresolved.push_back(std::move(u));
+    }
+  }
+  // branch(k, run) for k in [0, n): on this run, one after the other, with one thread; else
+  // each on a run of its own in parallel (Subdivision_solver_parameters::threads), merged in
+  // the order of k. A branch leaves the state it changed as it found it.
+  template <class F> void fork(std::size_t n, const F& branch)
+  {
+    if (n <= 1 || worker_threads(P.threads) <= 1) {
+      for (std::size_t k = 0; k < n; ++k) branch(k, *this);
+      return;
+    }
+    std::vector<std::unique_ptr<Plan_run>> runs(n);
+    parallel_for_each_index(n, P.threads, [&](std::size_t k) {
+      runs[k].reset(new Plan_run(*this, Branch_tag()));
+      branch(k, *runs[k]);
+    });
+    for (auto& r : runs) merge(*r);
   }
 
   double elapsed() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); }
@@ -266,7 +316,7 @@ template <class IT, class NT> struct Plan_run
         // box holding the product is the one the blocks proved there)
         ++result.refinements;
         bool done = false;
-        if (!whole_too_large) try {
+        if (!*whole_too_large) try {
             if (auto t = Subdivision_solver<IT>(P).refine(*sys, value)) {
               r.enclosure = t->enclosure;
               done = widest(r.enclosure) <= P.tolerance;
@@ -274,7 +324,7 @@ template <class IT, class NT> struct Plan_run
           } catch (const Input_error&) {
             // the whole system is beyond the solver's dense arrays (what the plan is for: two
             // stacked platforms): not tried again
-            whole_too_large = true;
+            *whole_too_large = true;
           }
         // else the same test on the sparse polynomials (any size), in more bits where double
         // precision stops short; the blocks' certified enclosure stands where it cannot narrow
@@ -316,12 +366,19 @@ template <class IT, class NT> struct Plan_run
         if (g != std::size_t(-1) && !assigned[g] && std::find(fresh.begin(), fresh.end(), g) == fresh.end()) fresh.push_back(g);
       }
       if (!fresh.empty()) {
-        const Polynomial_system<NT>* outer = sys;
         for (std::size_t g : fresh) assigned[g] = 1;
+        std::vector<std::vector<int>> assignments;
         std::vector<int> local(fresh.size(), 0);
         for (;;) {
-          for (std::size_t k = 0; k < fresh.size(); ++k) charts[fresh[k]] = local[k];
-          const Polynomial_system<NT> s = make_system(charts);
+          assignments.push_back(local);
+          std::size_t k = 0;
+          while (k < fresh.size() && ++local[k] == (*radix)[fresh[k]]) local[k++] = 0;
+          if (k == fresh.size()) break;
+        }
+        fork(assignments.size(), [&](std::size_t a, Plan_run& run) {
+          const Polynomial_system<NT>* outer = run.sys;
+          for (std::size_t k = 0; k < fresh.size(); ++k) run.charts[fresh[k]] = assignments[a][k];
+          const Polynomial_system<NT> s = run.make_system(run.charts);
           // the plan's promise: the blocks before this one do not see these charts (made from
           // the union of the charts' supports; checked, a system built directly could differ)
           for (std::size_t e = 0; e < b; ++e) {
@@ -334,14 +391,11 @@ template <class IT, class NT> struct Plan_run
                 throw Input_error("solve_with_plan_over_charts: the charts of block " + std::to_string(b) + " change inequality " +
                                   std::to_string(q) + " of block " + std::to_string(e) + ", solved before them");
           }
-          sys = &s;
-          solve_block_and_go(b, certified, boundary, ineq_boundary);
-          std::size_t k = 0;
-          while (k < fresh.size() && ++local[k] == (*radix)[fresh[k]]) local[k++] = 0;
-          if (k == fresh.size()) break;
-        }
+          run.sys = &s;
+          run.solve_block_and_go(b, certified, boundary, ineq_boundary);
+          run.sys = outer;
+        });
         for (std::size_t g : fresh) { assigned[g] = 0; charts[g] = 0; }
-        sys = outer;
         return;
       }
     }
@@ -419,15 +473,16 @@ template <class IT, class NT> struct Plan_run
       v.box = current_box(b, u.box);
       target().unresolved.push_back(v);
     }
-    const Polynomial_system<NT>* mine = sys;
-    for (const auto& r : res.roots) {
-      for (std::size_t k = 0; k < blk.variables.size(); ++k) {
-        value[blk.variables[k]] = r.enclosure[k];
-        known[blk.variables[k]] = 1;
+    fork(res.roots.size(), [&](std::size_t k, Plan_run& run) {
+      const auto& r = res.roots[k];
+      const Polynomial_system<NT>* mine = run.sys;
+      for (std::size_t v = 0; v < blk.variables.size(); ++v) {
+        run.value[blk.variables[v]] = r.enclosure[v];
+        run.known[blk.variables[v]] = 1;
       }
-      go(b + 1, certified && r.certified, boundary || r.on_boundary, ineq_boundary || r.on_inequality_boundary);
-      sys = mine;  // (a block after it may have chosen charts: their system is gone)
-    }
+      run.go(b + 1, certified && r.certified, boundary || r.on_boundary, ineq_boundary || r.on_inequality_boundary);
+      run.sys = mine;  // (a block after it may have chosen charts: their system is gone)
+    });
     for (std::size_t j : blk.variables) known[j] = 0;
   }
 };

@@ -464,6 +464,23 @@ if(TARGET rigid_incidence)
   add_test(NAME cli_usage_max_seconds_analyze
            COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=analyze|${_ri_d}/tetra.json|--max-seconds|1" -DEXPECT_RC=1
                    "-DEXPECT_STDERR=--max-seconds is an option of solve" -P ${_ri_cli_script})
+  # --threads: a whole number of threads, for solve and solve-system; the JSON says how many ran
+  # (tetra's 4 configurations with 2, checked as any solve)
+  add_test(NAME cli_usage_threads_zero
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${_ri_d}/tetra.json|--threads|0" -DEXPECT_RC=1
+                   "-DEXPECT_STDERR=--threads: '0' is not a positive number" -P ${_ri_cli_script})
+  add_test(NAME cli_usage_threads_fraction
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${_ri_d}/tetra.json|--threads|1.5" -DEXPECT_RC=1
+                   "-DEXPECT_STDERR=--threads: '1.5' is not a whole number of threads" -P ${_ri_cli_script})
+  add_test(NAME cli_usage_threads_analyze
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=analyze|${_ri_d}/tetra.json|--threads|2" -DEXPECT_RC=1
+                   "-DEXPECT_STDERR=--threads is an option of solve and solve-system" -P ${_ri_cli_script})
+  add_test(NAME cli_solve_threads
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${_ri_d}/tetra.json|--json|--threads|2" -DEXPECT_RC=0
+                   "-DEXPECT_STDOUT=\"threads\": [12]"
+                   "-DSTDOUT_FILE=${CMAKE_CURRENT_BINARY_DIR}/cli_solve_threads.json"
+                   "-DCHECK_PROGRAM=$<TARGET_FILE:solve_json_check>" "-DCHECK_ARGS=STDOUT_FILE|${_ri_d}/tetra.json|--complete|true|--solutions|4"
+                   -P ${_ri_cli_script})
   # a scene that turns freely about an axis of three points, which the dof count calls rigid:
   # diagnosed, not refused (trace_curves took 0 equations in 1 variable for an error)
   add_test(NAME cli_solve_free_turn_about_axis
