@@ -11,10 +11,15 @@
 // - each chart combination alone (tetra, pent, quad with placements, a chain of 6 tetrahedra,
 //   a ring of 7, the Stewart-Gough platform's free rotation, the one-dof quad with curves);
 // - the plan over the charts, whose branches (a block's charts and roots) are forked
-//   (data/plan_three_blocks.json, two pairs of hinges, a tree of 7 bodies);
-// - placements built on worker threads (a molecular ring of 10 atoms, a strip of 8 triangles);
+//   (data/plan_three_blocks.json, two pairs of hinges);
+// - the placement combinations of a merged rigid part in parallel, one chart combination each
+//   (a tree of 7 bodies: 32 placements, a strip of 8 triangles: 128), and placements built on
+//   worker threads (a molecular ring of 10 atoms);
 // - the precision retry at more bits (CGAL::Gmpfi coefficients, whose default precision is per
 //   thread): tetra_i_tangent.
+// And the loops of internal/parallel.h themselves: every piece, on whatever thread, sees the
+// caller's rounding mode and Gmpfi default precision (nested loops too); the pipeline takes
+// its pieces in order; an exception comes back as the smallest index's.
 // Without oneTBB the threads are 1 and the test says so (it still compares the runs).
 // Usage: test_parallel_solve [scene.json ...] (default: the list above)
 
@@ -29,6 +34,7 @@
 #include <iostream>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "test_check.h"
@@ -102,8 +108,90 @@ static std::string text(const RI::Scene_solve_result& r)
   return o.str();
 }
 
+// The loops of internal/parallel.h carry the caller's context to every piece, whatever thread
+// runs it: the rounding mode (upward here, under a Protector) and CGAL::Gmpfi's default
+// precision (200 bits here; thread_local in CGAL 5.5, a worker starts at 53); the pipeline
+// takes the pieces in their order, one at a time; a nested loop runs too. Checked on the
+// pieces another thread ran (counted: with 2 cores and oneTBB some must be).
+static void loops_carry_the_context()
+{
+  typename CGAL::Interval_nt<false>::Protector protect;
+  const CGAL::FPU_CW_t cw = CGAL::FPU_get_cw();
+#ifdef CGAL_USE_MPFI
+  const auto old = CGAL::Gmpfi::set_default_precision(200);
+  auto precision_ok = [] { return CGAL::Gmpfi::get_default_precision() == 200; };
+#else
+  auto precision_ok = [] { return true; };
+#endif
+  const std::thread::id caller = std::this_thread::get_id();
+  const std::size_t n = 64;
+  std::vector<char> ok(n, 0), elsewhere(n, 0);
+  auto busy = [] {  // (long enough for the other thread to take pieces)
+    volatile double x = 0;
+    for (int k = 0; k < 200000; ++k) x = x + 1e-9 * k;
+  };
+  RI::internal::parallel_for_each_index(n, 2, [&](std::size_t i) {
+    busy();
+    ok[i] = CGAL::FPU_get_cw() == cw && precision_ok();
+    elsewhere[i] = std::this_thread::get_id() != caller;
+    // a nested loop: its pieces see the context too
+    std::vector<char> inner(4, 0);
+    RI::internal::parallel_for_each_index(4, 2, [&](std::size_t j) { inner[j] = CGAL::FPU_get_cw() == cw && precision_ok(); });
+    for (char c : inner) ok[i] = ok[i] && c;
+  });
+  std::size_t moved = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    CHECK(ok[i], "parallel_for_each_index: piece " << i << " ran without the caller's rounding mode or Gmpfi precision");
+    moved += elsewhere[i];
+  }
+  std::vector<std::size_t> taken;
+  std::size_t next = 0, moved_pipeline = 0;
+  bool stages_ok = true;
+  struct Piece { std::size_t i = 0; bool ok = false, elsewhere = false; };
+  RI::internal::ordered_pipeline<Piece>(2, 8,
+      [&](Piece& p) {
+        stages_ok = stages_ok && CGAL::FPU_get_cw() == cw && precision_ok();
+        if (next == n) return false;
+        p.i = next++;
+        return true;
+      },
+      [&](Piece& p) {
+        busy();
+        p.ok = CGAL::FPU_get_cw() == cw && precision_ok();
+        p.elsewhere = std::this_thread::get_id() != caller;
+      },
+      [&](Piece& p) {
+        stages_ok = stages_ok && CGAL::FPU_get_cw() == cw && precision_ok() && p.ok;
+        moved_pipeline += p.elsewhere;
+        taken.push_back(p.i);
+      });
+  CHECK(stages_ok, "ordered_pipeline: a stage ran without the caller's rounding mode or Gmpfi precision");
+  bool in_order = taken.size() == n;
+  for (std::size_t i = 0; in_order && i < n; ++i) in_order = taken[i] == i;
+  CHECK(in_order, "ordered_pipeline: the pieces were not taken in their order");
+  // an exception of a piece: the one of the smallest index
+  std::string what;
+  try {
+    RI::internal::parallel_for_each_index(16, 2, [&](std::size_t i) {
+      busy();
+      if (i == 5 || i == 11) throw RI::Input_error("piece " + std::to_string(i));
+    });
+  } catch (const RI::Input_error& e) {
+    what = e.what();
+  }
+  CHECK(what == "piece 5", "parallel_for_each_index: rethrew '" << what << "', not piece 5's");
+  CHECK(CGAL::FPU_get_cw() == cw && precision_ok(), "the caller's own context changed by the loops");
+#ifdef CGAL_USE_MPFI
+  CGAL::Gmpfi::set_default_precision(old);
+#endif
+  std::cout << "loops: " << moved << " of " << n << " pieces and " << moved_pipeline << " of " << n
+            << " pipeline pieces ran on another thread (each checked for the caller's context)\n";
+  if (RI::internal::worker_threads(2) > 1) CHECK(moved + moved_pipeline > 0, "no piece ran on another thread: the context checks checked nothing");
+}
+
 int main(int argc, char** argv)
 {
+  loops_carry_the_context();
   std::vector<std::string> files;
   for (int i = 1; i < argc; ++i) files.push_back(argv[i]);
   if (files.empty()) {
