@@ -1099,6 +1099,411 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
     g.seconds = seconds_before + since(started);
     parameters.progress(g);
   };
+  std::mutex width_mutex;
+  // a reduced system with the orientation inequalities
+  auto system_of = [&](const Reduced_system<Traits, NT>& r) {
+    Polynomial_system<NT> sys = r.system();
+    for (std::size_t q = 0; q < orientation.size(); ++q) {
+      auto g = r.orientation_numerator(orientation[q]);
+      sys.inequalities.push_back(parameters.inequalities[q].negative ? NT(-1) * g : g);
+      sys.inequality_labels.push_back("orientation " + parameters.inequalities[q].points[0] + " " + parameters.inequalities[q].points[1] +
+                                      " " + parameters.inequalities[q].points[2] + " " + parameters.inequalities[q].points[3]);
+    }
+    if constexpr (!std::is_same<NT, CGAL::Gmpq>::value) {
+      const double w = internal::coefficient_width(sys);
+      std::lock_guard<std::mutex> lock(width_mutex);  // (built on several threads)
+      st.coefficient_width = (std::max)(st.coefficient_width, w);
+    }
+    return sys;
+  };
+  // what the solve, or the tracer, of one chart combination found: configurations, curves,
+  // regions
+  auto process = [&](const std::vector<int>& charts, const Reduced_system<Traits, NT>& r, const Polynomial_system<NT>& sys,
+                     Solver_result<IT>& res) {
+    if (positive.empty() && !res.diagnosis.empty()) {
+      // say how far precision is ruled out as the cause: the widest coefficient enclosure
+      // of the system, relative to its equation's largest coefficient (0: exact)
+      positive = res.diagnosis + "; the reduced system's coefficients are " +
+                 (std::is_same<NT, CGAL::Gmpq>::value
+                      ? std::string("exact")
+                      : "enclosed to a relative width of " + internal::short_number(internal::coefficient_width(sys)));
+      std::string bits;
+      for (const auto& pr : out.placements) bits += (bits.empty() ? " (placements: " : ", ") + std::to_string(pr.precision) + " bits for '" + pr.body + "'";
+      if (!bits.empty()) positive += bits + ")";
+    }
+    auto unresolved = [&](Box_class kind, const std::string& reason, const std::vector<std::pair<double, double>>& box, std::size_t boxes,
+                          const Configuration& at) {
+      Scene_unresolved x;
+      x.kind = kind;
+      x.reason = reason;
+      x.charts = charts;
+      x.placements = placements;
+      x.box = box;
+      x.boxes = boxes;
+      x.at_centre = at;
+      return x;
+    };
+    // the solver's or the tracer's regions, with the configuration at each centre
+    auto add_regions = [&](const std::vector<Solver_unresolved<IT>>& regions) {
+      for (const auto& u : regions) {
+          std::vector<std::pair<double, double>> box;
+          std::vector<double> centre;
+          for (const auto& e : u.box) {
+            box.push_back(CGAL::to_interval(e));
+            centre.push_back(0.5 * box.back().first + 0.5 * box.back().second);
+          }
+          out.unresolved.push_back(unresolved(u.kind, u.reason, box, u.boxes, configuration(r, centre)));
+      }
+    };
+    // the curves of this chart combination: the whole system when it has one equation fewer
+    // than parameters; else, when the solver found a curve of solutions (rank n - 1 along a
+    // chain of boxes), the system without the equation the Jacobian's left null vector
+    // weighs most, keeping the branches on which that equation vanishes
+    long left_out = -1;
+    if (!one_dof && res.diagnosis.rfind("positive_dimensional", 0) == 0)
+      left_out = internal::dependent_equation(sys, res);
+    if (one_dof || left_out >= 0) {
+      Polynomial_system<NT> tsys = sys;
+      if (left_out >= 0) {
+        tsys.equations.erase(tsys.equations.begin() + left_out);
+        if (std::size_t(left_out) < tsys.labels.size()) tsys.labels.erase(tsys.labels.begin() + left_out);
+      }
+      Curve_tracer_parameters cp;
+      cp.precision = parameters.solver.precision;
+      cp.maximal_boxes = parameters.solver.maximal_boxes;
+      auto t4 = Clock::now();
+      Curve_result<IT> cr;
+      bool zero_equation = false;
+      for (const auto& e : tsys.equations) zero_equation = zero_equation || e.is_zero();
+      if (tsys.number_of_variables() == 1 && tsys.number_of_equations() == 0 && tsys.inequalities.empty()) {
+        // one parameter and nothing left to hold (the scene turns freely about a hinge): every
+        // value is a configuration, the chart's whole range one branch (its ends on the
+        // chart's border, joined to the next chart's)
+        Solution_curve<IT> whole;
+        const int samples = 64;
+        for (int k = 0; k <= samples; ++k)
+          whole.points.push_back({tsys.box[0].first + (tsys.box[0].second - tsys.box[0].first) * k / samples});
+        whole.ends[0] = whole.ends[1] = Curve_end::BOUNDARY;
+        cr.curves.push_back(whole);
+      } else if (tsys.number_of_variables() < 2 || tsys.number_of_equations() + 1 != tsys.number_of_variables() || zero_equation) {
+        // not a curve the tracer takes: the diagnosis stands, the regions stay unresolved
+        if (positive.empty()) positive = "positive_dimensional: the reduced system's solutions are not isolated";
+        positive += "; its curve was not traced (" + std::to_string(tsys.number_of_equations()) + " equation(s) in " +
+                    std::to_string(tsys.number_of_variables()) + " variable(s) after leaving one out)";
+      } else {
+        cr = trace_curves<IT>(tsys, cp);
+      }
+      st.solve_seconds += since(t4);
+      st.curve_boxes += cr.statistics.boxes;
+      add_regions(cr.unresolved);
+      for (const auto& c : cr.curves) {
+        internal::Scene_piece q;
+        q.piece.charts = charts;
+        q.piece.placements = placements;
+        q.piece.parameters = c.points;
+        q.ends[0] = c.ends[0];
+        q.ends[1] = c.ends[1];
+        q.closed = c.closed;
+        q.certified = c.certified;
+        q.on_inequality_boundary = c.on_inequality_boundary;
+        if (left_out >= 0) {
+          if (!internal::vanishes_along(sys.equations[std::size_t(left_out)], c.points)) continue;  // not a branch of the scene
+          q.certified = false;
+          q.note = "traced without equation " + std::to_string(left_out + 1) + " (" +
+                   (std::size_t(left_out) < sys.labels.size() ? sys.labels[std::size_t(left_out)] : std::string()) +
+                   "), which vanishes at every point of the branch (or whose coefficients' enclosures all contain 0):"
+                   " checked numerically, not proved";
+        }
+        // one piece per combination of placements of the bodies outside the covering set that
+        // holds along it; if none does, the first one, not certified (as without them)
+        std::vector<int> nc(nc_bodies.size(), 0);
+        std::size_t tried = 0;
+        std::vector<internal::Scene_piece> fitting, failing;
+        bool any_spurious = false;
+        do {
+          internal::Scene_piece qv = q;
+          std::vector<int> variants = placements;
+          for (std::size_t k = 0; k < nc_bodies.size(); ++k) variants[nc_bodies[k]] = nc[k];
+          qv.piece.placements = variants;
+          bool failed = false;
+          if (!internal::add_configurations(qv, c.points, r, original, parameters.residual_threshold, variants, &failed)) {
+            any_spurious = true;
+            continue;
+          }
+          (failed ? failing : fitting).push_back(std::move(qv));
+        } while (next_nc(nc, tried));
+        if (fitting.empty() && failing.empty() && any_spurious) ++st.spurious;
+        if (!fitting.empty()) for (auto& x : fitting) pieces.push_back(std::move(x));
+        else if (!failing.empty()) pieces.push_back(std::move(failing.front()));
+      }
+    }
+    // A cluster the solver stopped as a possible multiple root: a root that is not simple
+    // is not stable under perturbation, so no interval test proves it exists. Its centre
+    // is tried as a configuration like a root: if it satisfies the original system it is
+    // returned not certified and marked singular (the answer is then not complete); else
+    // the region stays unresolved. Not along a curve of solutions (a positive-dimensional
+    // diagnosis), whose regions are points of the curve, not roots.
+    std::vector<Solver_unresolved<IT>> regions_left;
+    std::vector<std::optional<Solver_unresolved<IT>>> from_region(res.roots.size());
+    for (const auto& u : res.unresolved) {
+      if (!res.diagnosis.empty() || u.kind != Box_class::UNKNOWN || u.reason.rfind("possible multiple root", 0) != 0) {
+        regions_left.push_back(u);
+        continue;
+      }
+      Solver_root<IT> root;
+      root.certified = false;
+      root.enclosure = u.box;
+      for (const auto& e : u.box) {
+        const auto iv = CGAL::to_interval(e);
+        root.approximation.push_back(0.5 * iv.first + 0.5 * iv.second);
+      }
+      res.roots.push_back(root);
+      from_region.push_back(u);
+    }
+    for (std::size_t ri = 0; ri < res.roots.size(); ++ri) {
+      const Solver_root<IT>& root = res.roots[ri];
+      ++st.roots;
+      Scene_configuration s;
+      s.certified = root.certified;
+      s.coefficient_precision = out.coefficient_precision;
+      if (from_region[ri]) {
+        s.singular = true;
+        s.singular_reason = "a possible multiple root of the reduced system (" + from_region[ri]->reason + ", " +
+                            std::to_string(from_region[ri]->boxes) + " box(es)): its centre satisfies the original system, but"
+                            " a root that is not simple cannot be certified by intervals, nor told from two close roots";
+      }
+      s.on_chart_border = root.on_boundary;
+      s.on_inequality_boundary = root.on_inequality_boundary;
+      s.charts = charts;
+      s.placements = placements;
+      s.variables = sys.variable_names;
+      for (const auto& e : root.enclosure) s.parameters.push_back(CGAL::to_interval(e));
+      for (std::size_t b = 0; b < singular_body.size(); ++b)
+        if (!singular_body[b].empty()) {
+          s.singular = true;
+          s.singular_reason = joined_reasons(s.singular_reason, singular_body[b]);
+        }
+      // one configuration per placement of the bodies outside the covering set that fits
+      std::vector<Scene_configuration> variants_found;
+      Scene_configuration first_failed;
+      std::vector<int> nc(nc_bodies.size(), 0);
+      std::size_t tried = 0;
+      do {
+        Scene_configuration v = s;
+        for (std::size_t k = 0; k < nc_bodies.size(); ++k) v.placements[nc_bodies[k]] = nc[k];
+        for (std::size_t b = 0; b < enumerations.size(); ++b) {
+          const Body_enclosure<CGAL::Interval_nt<false>>* e = always_double[b];
+          if (chosen_double[b] && b < v.placements.size() && std::size_t(v.placements[b]) < enumerations[b]->placements.size())
+            e = &enumerations[b]->placements[std::size_t(v.placements[b])];
+          if (e && e->singular) {
+            v.singular = true;
+            v.singular_reason = joined_reasons(v.singular_reason, e->singular_reason);
+          }
+        }
+        v.configuration = configuration(r, root.approximation, v.placements);
+        // a point standardize() put on a body's line where two distances' spheres touch: a
+        // double point of those two equations, which the scene's other equations may still
+        // hold (then, as below, the root is simple)
+        for (const std::string& why : c.singular_notes()) {
+          v.singular = true;
+          v.singular_reason = joined_reasons(v.singular_reason, why);
+        }
+        // a height exactly 0 in a placement is a double point of the body's own distances;
+        // further equations of the scene (a distance or a body it leaves to the reduced
+        // system) may still hold the point: then the Jacobian has full rank and the root is simple
+        if (v.singular && !from_region[ri] && jacobian_conditioning(original, v.configuration) > 1e-7) {
+          v.singular = false;
+          v.singular_reason.clear();
+        }
+        v.residuals = residuals(original, v.configuration);
+        v.max_residual = v.residuals.max();
+        const double vsize = internal::configuration_size(v.configuration);
+        v.max_relative_residual = internal::relative_residual(v.residuals, vsize);
+        // a multiple root's centre must satisfy the system far more closely than a root's
+        // double approximation (the cluster is narrow at the solver's precision)
+        if (internal::verified(v.residuals, from_region[ri] ? (std::min)(parameters.residual_threshold, 1e-10) : parameters.residual_threshold, vsize)) {
+          // two placements that put every point at the same place are one configuration
+          bool same = false;
+          for (const auto& w : variants_found)
+            same = same || internal::configuration_distance(w.configuration, v.configuration) <= parameters.merge_tolerance * vsize;
+          if (!same) variants_found.push_back(std::move(v));
+        } else if (first_failed.configuration.points.empty()) {
+          first_failed = std::move(v);
+        }
+      } while (next_nc(nc, tried));
+      if (variants_found.empty()) {
+        if (from_region[ri]) { regions_left.push_back(*from_region[ri]); continue; }  // not a configuration: stays unresolved
+        s = first_failed;
+        // a mirror image of the scene (some body reflected), not a configuration
+        if (internal::mirror_image(s.residuals, parameters.residual_threshold, internal::configuration_size(s.configuration))) { ++st.spurious; continue; }
+        // not verified for another reason: say so rather than drop it
+        out.unresolved.push_back(unresolved(Box_class::UNKNOWN, "root of the reduced system not verified in the original system (residual " +
+                                                std::to_string(s.max_residual) + ")", s.parameters, 1, s.configuration));
+        continue;
+      }
+      for (Scene_configuration& v : variants_found) {
+      Scene_configuration& s = v;
+      const double size = internal::configuration_size(s.configuration);
+      bool merged = false;
+      for (auto& f : found) {
+        // one root seen from two charts; never two roots of one system, nor two placements
+        // of a body (distinct shapes, however close: a near-degenerate body's mirror pair);
+        // but two regions of one system around one possible multiple root (a cluster the
+        // solver left in two pieces) are one configuration, still not certified
+        if (f.s.placements != s.placements) continue;
+        if (f.s.charts == s.charts && (f.s.certified || s.certified)) continue;
+        if (internal::configuration_distance(f.s.configuration, s.configuration) <= parameters.merge_tolerance * (std::max)(size, f.size)) {
+          ++f.s.found;
+          ++st.duplicates;
+          if (!f.s.certified && s.certified) { std::size_t k = f.s.found; f.s = s; f.s.found = k; }
+          merged = true;
+          break;
+        }
+      }
+      if (!merged) found.push_back({s, size});
+      }
+    }
+    add_regions(regions_left);
+  };
+  // what one combination's build and solve give (touched by its own thread only)
+  struct Combination_work
+  {
+    std::vector<int> charts, placements;
+    bool excluded = false;  // a placement combination placements_fit() excludes: nothing to do
+    std::optional<Reduced_system<Traits, NT>> r;
+    Polynomial_system<NT> sys;
+    Solver_result<IT> res;
+    double reduce_seconds = 0, solve_seconds = 0;
+    bool planned = false;
+    std::size_t block_solves = 0, plan_boxes = 0, plan_krawczyk_tests = 0;
+  };
+  // one combination's solve, its system built (w.r, w.sys, w.reduce_seconds): on any thread
+  auto solve_combination = [&](Combination_work& w) {
+    const Polynomial_system<NT>& sys = w.sys;
+    Solver_result<IT>& res = w.res;
+    auto t2 = Clock::now();
+    if (one_dof) {
+      // traced below
+    } else if (sys.number_of_variables() == 0) {
+      // one body, or bodies fixed by the placements alone: the configuration is the
+      // placement itself (each placement variant is one)
+      Solver_root<IT> root;
+      root.certified = true;
+      res.roots.push_back(root);
+    } else {
+      // what is left of the whole solve's time, and its interrupt, bound this solve too
+      Subdivision_solver_parameters sp = parameters.solver;
+      if (!sp.interrupt) sp.interrupt = parameters.interrupt;
+      if (parameters.maximal_seconds > 0) {
+        const double left = (std::max)(parameters.maximal_seconds - since(started), 1e-3);
+        sp.maximal_seconds = sp.maximal_seconds > 0 ? (std::min)(sp.maximal_seconds, left) : left;
+      }
+      bool planned = false;
+      if (parameters.solve_with_plan && sys.number_of_equations() == sys.number_of_variables()) {
+        const Solution_plan plan(sys);
+        if (plan.blocks().size() > 1 && plan.over_determined_equations().empty() && plan.under_determined_variables().empty() &&
+            plan.unattached_inequalities().empty()) {
+          try {
+            const Plan_result<IT> pr = solve_with_plan<IT>(sys, plan, sp);
+            if (pr.diagnosis.empty()) {
+              res = internal::solver_result_of_plan(pr, plan.blocks().size());
+              planned = true;
+              w.planned = true;
+              w.block_solves = pr.block_solves;
+            } else {
+              // the whole system's solve diagnoses, and traces, what a block could not
+              w.plan_boxes = pr.boxes;
+              w.plan_krawczyk_tests = pr.krawczyk_tests;
+            }
+          } catch (const Input_error&) {
+            // (an equation vanishes once earlier roots are substituted: solved whole)
+          }
+        }
+      }
+      if (!planned) res = Subdivision_solver<IT>(sp).solve(sys);
+    }
+    w.solve_seconds = since(t2);
+  };
+  // what one combination found, taken in the order of the combinations (one at a time)
+  auto take_combination = [&](Combination_work& w) {
+    // (process() reads it; in the placement loop below, every combination has the loop's own,
+    // read meanwhile by the stages that build and solve: not written then)
+    if (placements != w.placements) placements = w.placements;
+    const Solver_result<IT>& res = w.res;
+    const double ts = w.solve_seconds;
+    st.reduce_seconds += w.reduce_seconds;
+    st.solve_seconds += ts;
+    if (w.planned) {
+      ++st.planned_systems;
+      st.block_solves += w.block_solves;
+    }
+    st.boxes += w.plan_boxes;
+    st.krawczyk_tests += w.plan_krawczyk_tests;
+    ++st.chart_combinations;
+    st.boxes += res.statistics.boxes;
+    st.krawczyk_tests += res.statistics.krawczyk_tests;
+    if (res.statistics.boxes == 1 && res.roots.empty() && res.unresolved.empty()) {
+      ++st.excluded_at_once;
+      st.excluded_at_once_seconds += ts;
+    }
+    auto t3 = Clock::now();
+    process(w.charts, *w.r, w.sys, w.res);
+    st.verify_seconds += since(t3);
+    ++done;
+    report();
+  };
+  // One chart combination per placement combination (no tree edge with charts: a merged
+  // rigid part's placements, a tree or strip of bodies known by distances): the placement
+  // combinations themselves are built and solved in parallel, and taken in their order.
+  if (per_placement == 1) {
+    std::vector<int> next_placements = placements;
+    bool more_placements = true;
+    auto next = [&](Combination_work& w) {
+      while (more_placements) {
+        std::vector<int> pl = next_placements;
+        more_placements = internal::next_combination(next_placements, radix_p);
+        if (!placements_fit(pl)) {
+          if (retry) continue;
+          w.placements = std::move(pl);
+          w.excluded = true;
+          return true;
+        }
+        std::vector<int> ch(radix_c.size(), 0);
+        if (retry && !retry->only.count(Scene_combination(pl, ch))) continue;
+        if ((stopped = stop_reason())) return more_placements = false;
+        w.placements = std::move(pl);
+        w.charts = std::move(ch);
+        return true;
+      }
+      return false;
+    };
+    internal::ordered_pipeline<Combination_work>(threads, 4 * std::size_t(threads), next, [&](Combination_work& w) {
+        if (w.excluded) return;
+        auto t1 = Clock::now();
+        // as below: chart 0's system, and the system by a change of chart from it where it allows
+        std::optional<Reduced_system<Traits, NT>> zero;
+        if (parameters.change_charts) {
+          zero.emplace(c, tree, selection, std::vector<int>(radix_c.size(), 0), Rotation_form::QUATERNION_CHARTS, w.placements);
+          if (!zero->changes_charts()) {
+            w.r.emplace(std::move(*zero));  // (the system a direct build gives: the same constructor)
+            zero.reset();
+          }
+        }
+        if (!w.r)
+          w.r.emplace(zero ? Reduced_system<Traits, NT>(*zero, w.charts)
+                           : Reduced_system<Traits, NT>(c, tree, selection, w.charts, Rotation_form::QUATERNION_CHARTS, w.placements));
+        w.sys = system_of(*w.r);
+        w.reduce_seconds = since(t1);
+        solve_combination(w);
+      }, [&](Combination_work& w) {
+        if (w.excluded) {
+          ++st.placements_excluded;
+          done += per_placement;
+          return;
+        }
+        take_combination(w);
+      });
+  } else
   do {
     if (!placements_fit(placements)) {
       if (!retry) { ++st.placements_excluded; done += per_placement; }
@@ -1107,272 +1512,6 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
     // the system of chart 0 of this placement combination, which the others are made from
     std::optional<Reduced_system<Traits, NT>> base;
     bool base_tried = !parameters.change_charts;
-    std::mutex width_mutex;
-    // a reduced system with the orientation inequalities
-    auto system_of = [&](const Reduced_system<Traits, NT>& r) {
-      Polynomial_system<NT> sys = r.system();
-      for (std::size_t q = 0; q < orientation.size(); ++q) {
-        auto g = r.orientation_numerator(orientation[q]);
-        sys.inequalities.push_back(parameters.inequalities[q].negative ? NT(-1) * g : g);
-        sys.inequality_labels.push_back("orientation " + parameters.inequalities[q].points[0] + " " + parameters.inequalities[q].points[1] +
-                                        " " + parameters.inequalities[q].points[2] + " " + parameters.inequalities[q].points[3]);
-      }
-      if constexpr (!std::is_same<NT, CGAL::Gmpq>::value) {
-        const double w = internal::coefficient_width(sys);
-        std::lock_guard<std::mutex> lock(width_mutex);  // (built on several threads)
-        st.coefficient_width = (std::max)(st.coefficient_width, w);
-      }
-      return sys;
-    };
-    // what the solve, or the tracer, of one chart combination found: configurations, curves,
-    // regions
-    auto process = [&](const std::vector<int>& charts, const Reduced_system<Traits, NT>& r, const Polynomial_system<NT>& sys,
-                       Solver_result<IT>& res) {
-      if (positive.empty() && !res.diagnosis.empty()) {
-        // say how far precision is ruled out as the cause: the widest coefficient enclosure
-        // of the system, relative to its equation's largest coefficient (0: exact)
-        positive = res.diagnosis + "; the reduced system's coefficients are " +
-                   (std::is_same<NT, CGAL::Gmpq>::value
-                        ? std::string("exact")
-                        : "enclosed to a relative width of " + internal::short_number(internal::coefficient_width(sys)));
-        std::string bits;
-        for (const auto& pr : out.placements) bits += (bits.empty() ? " (placements: " : ", ") + std::to_string(pr.precision) + " bits for '" + pr.body + "'";
-        if (!bits.empty()) positive += bits + ")";
-      }
-      auto unresolved = [&](Box_class kind, const std::string& reason, const std::vector<std::pair<double, double>>& box, std::size_t boxes,
-                            const Configuration& at) {
-        Scene_unresolved x;
-        x.kind = kind;
-        x.reason = reason;
-        x.charts = charts;
-        x.placements = placements;
-        x.box = box;
-        x.boxes = boxes;
-        x.at_centre = at;
-        return x;
-      };
-      // the solver's or the tracer's regions, with the configuration at each centre
-      auto add_regions = [&](const std::vector<Solver_unresolved<IT>>& regions) {
-        for (const auto& u : regions) {
-            std::vector<std::pair<double, double>> box;
-            std::vector<double> centre;
-            for (const auto& e : u.box) {
-              box.push_back(CGAL::to_interval(e));
-              centre.push_back(0.5 * box.back().first + 0.5 * box.back().second);
-            }
-            out.unresolved.push_back(unresolved(u.kind, u.reason, box, u.boxes, configuration(r, centre)));
-        }
-      };
-      // the curves of this chart combination: the whole system when it has one equation fewer
-      // than parameters; else, when the solver found a curve of solutions (rank n - 1 along a
-      // chain of boxes), the system without the equation the Jacobian's left null vector
-      // weighs most, keeping the branches on which that equation vanishes
-      long left_out = -1;
-      if (!one_dof && res.diagnosis.rfind("positive_dimensional", 0) == 0)
-        left_out = internal::dependent_equation(sys, res);
-      if (one_dof || left_out >= 0) {
-        Polynomial_system<NT> tsys = sys;
-        if (left_out >= 0) {
-          tsys.equations.erase(tsys.equations.begin() + left_out);
-          if (std::size_t(left_out) < tsys.labels.size()) tsys.labels.erase(tsys.labels.begin() + left_out);
-        }
-        Curve_tracer_parameters cp;
-        cp.precision = parameters.solver.precision;
-        cp.maximal_boxes = parameters.solver.maximal_boxes;
-        auto t4 = Clock::now();
-        Curve_result<IT> cr;
-        bool zero_equation = false;
-        for (const auto& e : tsys.equations) zero_equation = zero_equation || e.is_zero();
-        if (tsys.number_of_variables() == 1 && tsys.number_of_equations() == 0 && tsys.inequalities.empty()) {
-          // one parameter and nothing left to hold (the scene turns freely about a hinge): every
-          // value is a configuration, the chart's whole range one branch (its ends on the
-          // chart's border, joined to the next chart's)
-          Solution_curve<IT> whole;
-          const int samples = 64;
-          for (int k = 0; k <= samples; ++k)
-            whole.points.push_back({tsys.box[0].first + (tsys.box[0].second - tsys.box[0].first) * k / samples});
-          whole.ends[0] = whole.ends[1] = Curve_end::BOUNDARY;
-          cr.curves.push_back(whole);
-        } else if (tsys.number_of_variables() < 2 || tsys.number_of_equations() + 1 != tsys.number_of_variables() || zero_equation) {
-          // not a curve the tracer takes: the diagnosis stands, the regions stay unresolved
-          if (positive.empty()) positive = "positive_dimensional: the reduced system's solutions are not isolated";
-          positive += "; its curve was not traced (" + std::to_string(tsys.number_of_equations()) + " equation(s) in " +
-                      std::to_string(tsys.number_of_variables()) + " variable(s) after leaving one out)";
-        } else {
-          cr = trace_curves<IT>(tsys, cp);
-        }
-        st.solve_seconds += since(t4);
-        st.curve_boxes += cr.statistics.boxes;
-        add_regions(cr.unresolved);
-        for (const auto& c : cr.curves) {
-          internal::Scene_piece q;
-          q.piece.charts = charts;
-          q.piece.placements = placements;
-          q.piece.parameters = c.points;
-          q.ends[0] = c.ends[0];
-          q.ends[1] = c.ends[1];
-          q.closed = c.closed;
-          q.certified = c.certified;
-          q.on_inequality_boundary = c.on_inequality_boundary;
-          if (left_out >= 0) {
-            if (!internal::vanishes_along(sys.equations[std::size_t(left_out)], c.points)) continue;  // not a branch of the scene
-            q.certified = false;
-            q.note = "traced without equation " + std::to_string(left_out + 1) + " (" +
-                     (std::size_t(left_out) < sys.labels.size() ? sys.labels[std::size_t(left_out)] : std::string()) +
-                     "), which vanishes at every point of the branch (or whose coefficients' enclosures all contain 0):"
-                     " checked numerically, not proved";
-          }
-          // one piece per combination of placements of the bodies outside the covering set that
-          // holds along it; if none does, the first one, not certified (as without them)
-          std::vector<int> nc(nc_bodies.size(), 0);
-          std::size_t tried = 0;
-          std::vector<internal::Scene_piece> fitting, failing;
-          bool any_spurious = false;
-          do {
-            internal::Scene_piece qv = q;
-            std::vector<int> variants = placements;
-            for (std::size_t k = 0; k < nc_bodies.size(); ++k) variants[nc_bodies[k]] = nc[k];
-            qv.piece.placements = variants;
-            bool failed = false;
-            if (!internal::add_configurations(qv, c.points, r, original, parameters.residual_threshold, variants, &failed)) {
-              any_spurious = true;
-              continue;
-            }
-            (failed ? failing : fitting).push_back(std::move(qv));
-          } while (next_nc(nc, tried));
-          if (fitting.empty() && failing.empty() && any_spurious) ++st.spurious;
-          if (!fitting.empty()) for (auto& x : fitting) pieces.push_back(std::move(x));
-          else if (!failing.empty()) pieces.push_back(std::move(failing.front()));
-        }
-      }
-      // A cluster the solver stopped as a possible multiple root: a root that is not simple
-      // is not stable under perturbation, so no interval test proves it exists. Its centre
-      // is tried as a configuration like a root: if it satisfies the original system it is
-      // returned not certified and marked singular (the answer is then not complete); else
-      // the region stays unresolved. Not along a curve of solutions (a positive-dimensional
-      // diagnosis), whose regions are points of the curve, not roots.
-      std::vector<Solver_unresolved<IT>> regions_left;
-      std::vector<std::optional<Solver_unresolved<IT>>> from_region(res.roots.size());
-      for (const auto& u : res.unresolved) {
-        if (!res.diagnosis.empty() || u.kind != Box_class::UNKNOWN || u.reason.rfind("possible multiple root", 0) != 0) {
-          regions_left.push_back(u);
-          continue;
-        }
-        Solver_root<IT> root;
-        root.certified = false;
-        root.enclosure = u.box;
-        for (const auto& e : u.box) {
-          const auto iv = CGAL::to_interval(e);
-          root.approximation.push_back(0.5 * iv.first + 0.5 * iv.second);
-        }
-        res.roots.push_back(root);
-        from_region.push_back(u);
-      }
-      for (std::size_t ri = 0; ri < res.roots.size(); ++ri) {
-        const Solver_root<IT>& root = res.roots[ri];
-        ++st.roots;
-        Scene_configuration s;
-        s.certified = root.certified;
-        s.coefficient_precision = out.coefficient_precision;
-        if (from_region[ri]) {
-          s.singular = true;
-          s.singular_reason = "a possible multiple root of the reduced system (" + from_region[ri]->reason + ", " +
-                              std::to_string(from_region[ri]->boxes) + " box(es)): its centre satisfies the original system, but"
-                              " a root that is not simple cannot be certified by intervals, nor told from two close roots";
-        }
-        s.on_chart_border = root.on_boundary;
-        s.on_inequality_boundary = root.on_inequality_boundary;
-        s.charts = charts;
-        s.placements = placements;
-        s.variables = sys.variable_names;
-        for (const auto& e : root.enclosure) s.parameters.push_back(CGAL::to_interval(e));
-        for (std::size_t b = 0; b < singular_body.size(); ++b)
-          if (!singular_body[b].empty()) {
-            s.singular = true;
-            s.singular_reason = joined_reasons(s.singular_reason, singular_body[b]);
-          }
-        // one configuration per placement of the bodies outside the covering set that fits
-        std::vector<Scene_configuration> variants_found;
-        Scene_configuration first_failed;
-        std::vector<int> nc(nc_bodies.size(), 0);
-        std::size_t tried = 0;
-        do {
-          Scene_configuration v = s;
-          for (std::size_t k = 0; k < nc_bodies.size(); ++k) v.placements[nc_bodies[k]] = nc[k];
-          for (std::size_t b = 0; b < enumerations.size(); ++b) {
-            const Body_enclosure<CGAL::Interval_nt<false>>* e = always_double[b];
-            if (chosen_double[b] && b < v.placements.size() && std::size_t(v.placements[b]) < enumerations[b]->placements.size())
-              e = &enumerations[b]->placements[std::size_t(v.placements[b])];
-            if (e && e->singular) {
-              v.singular = true;
-              v.singular_reason = joined_reasons(v.singular_reason, e->singular_reason);
-            }
-          }
-          v.configuration = configuration(r, root.approximation, v.placements);
-          // a point standardize() put on a body's line where two distances' spheres touch: a
-          // double point of those two equations, which the scene's other equations may still
-          // hold (then, as below, the root is simple)
-          for (const std::string& why : c.singular_notes()) {
-            v.singular = true;
-            v.singular_reason = joined_reasons(v.singular_reason, why);
-          }
-          // a height exactly 0 in a placement is a double point of the body's own distances;
-          // further equations of the scene (a distance or a body it leaves to the reduced
-          // system) may still hold the point: then the Jacobian has full rank and the root is simple
-          if (v.singular && !from_region[ri] && jacobian_conditioning(original, v.configuration) > 1e-7) {
-            v.singular = false;
-            v.singular_reason.clear();
-          }
-          v.residuals = residuals(original, v.configuration);
-          v.max_residual = v.residuals.max();
-          const double vsize = internal::configuration_size(v.configuration);
-          v.max_relative_residual = internal::relative_residual(v.residuals, vsize);
-          // a multiple root's centre must satisfy the system far more closely than a root's
-          // double approximation (the cluster is narrow at the solver's precision)
-          if (internal::verified(v.residuals, from_region[ri] ? (std::min)(parameters.residual_threshold, 1e-10) : parameters.residual_threshold, vsize)) {
-            // two placements that put every point at the same place are one configuration
-            bool same = false;
-            for (const auto& w : variants_found)
-              same = same || internal::configuration_distance(w.configuration, v.configuration) <= parameters.merge_tolerance * vsize;
-            if (!same) variants_found.push_back(std::move(v));
-          } else if (first_failed.configuration.points.empty()) {
-            first_failed = std::move(v);
-          }
-        } while (next_nc(nc, tried));
-        if (variants_found.empty()) {
-          if (from_region[ri]) { regions_left.push_back(*from_region[ri]); continue; }  // not a configuration: stays unresolved
-          s = first_failed;
-          // a mirror image of the scene (some body reflected), not a configuration
-          if (internal::mirror_image(s.residuals, parameters.residual_threshold, internal::configuration_size(s.configuration))) { ++st.spurious; continue; }
-          // not verified for another reason: say so rather than drop it
-          out.unresolved.push_back(unresolved(Box_class::UNKNOWN, "root of the reduced system not verified in the original system (residual " +
-                                                  std::to_string(s.max_residual) + ")", s.parameters, 1, s.configuration));
-          continue;
-        }
-        for (Scene_configuration& v : variants_found) {
-        Scene_configuration& s = v;
-        const double size = internal::configuration_size(s.configuration);
-        bool merged = false;
-        for (auto& f : found) {
-          // one root seen from two charts; never two roots of one system, nor two placements
-          // of a body (distinct shapes, however close: a near-degenerate body's mirror pair);
-          // but two regions of one system around one possible multiple root (a cluster the
-          // solver left in two pieces) are one configuration, still not certified
-          if (f.s.placements != s.placements) continue;
-          if (f.s.charts == s.charts && (f.s.certified || s.certified)) continue;
-          if (internal::configuration_distance(f.s.configuration, s.configuration) <= parameters.merge_tolerance * (std::max)(size, f.size)) {
-            ++f.s.found;
-            ++st.duplicates;
-            if (!f.s.certified && s.certified) { std::size_t k = f.s.found; f.s = s; f.s.found = k; }
-            merged = true;
-            break;
-          }
-        }
-        if (!merged) found.push_back({s, size});
-        }
-      }
-      add_regions(regions_left);
-    };
     // Along the solution plan over the charts (solve_with_plan_over_charts()): each block
     // chooses the charts of its own tree edges (hinges and free rotations), so a block is not
     // solved again for each chart of the edges after it, and the chart combinations under a
@@ -1500,17 +1639,6 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
     // depend on the threads. The stop is checked before each combination starts.
     std::vector<int> next_charts(radix_c.size(), 0);
     bool more_charts = true;
-    // what one combination's build and solve give (touched by its own thread only)
-    struct Combination_work
-    {
-      std::vector<int> charts;
-      std::optional<Reduced_system<Traits, NT>> r;
-      Polynomial_system<NT> sys;
-      Solver_result<IT> res;
-      double reduce_seconds = 0, solve_seconds = 0;
-      bool planned = false;
-      std::size_t block_solves = 0, plan_boxes = 0, plan_krawczyk_tests = 0;
-    };
     auto next = [&](Combination_work& w) {
       while (more_charts) {
         std::vector<int> ch = next_charts;
@@ -1525,6 +1653,7 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
           st.reduce_seconds += since(t1);
         }
         w.charts = std::move(ch);
+        w.placements = placements;
         return true;
       }
       return false;
@@ -1533,77 +1662,11 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
         const std::vector<int>& charts = w.charts;
         auto t1 = Clock::now();
         w.r.emplace(base ? Reduced_system<Traits, NT>(*base, charts)
-                         : Reduced_system<Traits, NT>(c, tree, selection, charts, Rotation_form::QUATERNION_CHARTS, placements));
+                         : Reduced_system<Traits, NT>(c, tree, selection, charts, Rotation_form::QUATERNION_CHARTS, w.placements));
         w.sys = system_of(*w.r);
-        const Polynomial_system<NT>& sys = w.sys;
-        Solver_result<IT>& res = w.res;
         w.reduce_seconds = since(t1);
-        auto t2 = Clock::now();
-        if (one_dof) {
-          // traced below
-        } else if (sys.number_of_variables() == 0) {
-          // one body, or bodies fixed by the placements alone: the configuration is the
-          // placement itself (each placement variant is one)
-          Solver_root<IT> root;
-          root.certified = true;
-          res.roots.push_back(root);
-        } else {
-          // what is left of the whole solve's time, and its interrupt, bound this solve too
-          Subdivision_solver_parameters sp = parameters.solver;
-          if (!sp.interrupt) sp.interrupt = parameters.interrupt;
-          if (parameters.maximal_seconds > 0) {
-            const double left = (std::max)(parameters.maximal_seconds - since(started), 1e-3);
-            sp.maximal_seconds = sp.maximal_seconds > 0 ? (std::min)(sp.maximal_seconds, left) : left;
-          }
-          bool planned = false;
-          if (parameters.solve_with_plan && sys.number_of_equations() == sys.number_of_variables()) {
-            const Solution_plan plan(sys);
-            if (plan.blocks().size() > 1 && plan.over_determined_equations().empty() && plan.under_determined_variables().empty() &&
-                plan.unattached_inequalities().empty()) {
-              try {
-                const Plan_result<IT> pr = solve_with_plan<IT>(sys, plan, sp);
-                if (pr.diagnosis.empty()) {
-                  res = internal::solver_result_of_plan(pr, plan.blocks().size());
-                  planned = true;
-                  w.planned = true;
-                  w.block_solves = pr.block_solves;
-                } else {
-                  // the whole system's solve diagnoses, and traces, what a block could not
-                  w.plan_boxes = pr.boxes;
-                  w.plan_krawczyk_tests = pr.krawczyk_tests;
-                }
-              } catch (const Input_error&) {
-                // (an equation vanishes once earlier roots are substituted: solved whole)
-              }
-            }
-          }
-          if (!planned) res = Subdivision_solver<IT>(sp).solve(sys);
-        }
-        w.solve_seconds = since(t2);
-      }, [&](Combination_work& w) {
-        const Solver_result<IT>& res = w.res;
-        const double ts = w.solve_seconds;
-        st.reduce_seconds += w.reduce_seconds;
-        st.solve_seconds += ts;
-        if (w.planned) {
-          ++st.planned_systems;
-          st.block_solves += w.block_solves;
-        }
-        st.boxes += w.plan_boxes;
-        st.krawczyk_tests += w.plan_krawczyk_tests;
-        ++st.chart_combinations;
-        st.boxes += res.statistics.boxes;
-        st.krawczyk_tests += res.statistics.krawczyk_tests;
-        if (res.statistics.boxes == 1 && res.roots.empty() && res.unresolved.empty()) {
-          ++st.excluded_at_once;
-          st.excluded_at_once_seconds += ts;
-        }
-        auto t3 = Clock::now();
-        process(w.charts, *w.r, w.sys, w.res);
-        st.verify_seconds += since(t3);
-        ++done;
-        report();
-      });
+        solve_combination(w);
+      }, take_combination);
   } while (!stopped && internal::next_combination(placements, radix_p));
   // a stop the solver met inside the last combination (its rest left pending for it) is a
   // stop of the whole solve too
