@@ -164,7 +164,6 @@ template <class IT, class NT> struct Plan_run
   Plan_result<IT>& target() { return group ? by_charts[charts] : result; }
   std::vector<IT> value;
   std::vector<char> known;
-  std::vector<char> certified_so_far, boundary_so_far, ineq_boundary_so_far;
   // refine() refused the whole system (too large for its dense arrays: the same for every root
   // and chart): not tried again, by any branch
   std::shared_ptr<std::atomic<bool>> whole_too_large = std::make_shared<std::atomic<bool>>(false);
