@@ -603,7 +603,7 @@ int solve(const RI::Scene& scene, const RI::Rigid_body_collection<Traits>& input
                   {"boxes", st.boxes}, {"krawczyk_tests", st.krawczyk_tests}, {"roots", st.roots},
                   {"duplicates_merged", st.duplicates}, {"spurious_rejected", st.spurious}, {"curve_boxes", st.curve_boxes},
                   {"placements_excluded", st.placements_excluded},
-                  {"planned_systems", st.planned_systems}, {"block_solves", st.block_solves}, {"excluded_by_plan", st.excluded_by_plan},
+                  {"planned_systems", st.planned_systems}, {"block_solves", st.block_solves}, {"excluded_by_plan", st.excluded_by_plan}, {"excluded_by_propagation", st.excluded_by_propagation},
                   {"coefficient_width", st.coefficient_width}, {"threads", st.threads},
                   {"seconds", {{"analysis", analysis_seconds}, {"reduce", st.reduce_seconds}, {"solve", st.solve_seconds},
                                {"verify", st.verify_seconds}}}};
@@ -693,6 +693,7 @@ int solve(const RI::Scene& scene, const RI::Rigid_body_collection<Traits>& input
             << st.duplicates << " found twice, " << st.spurious << " rejected by the original system), " << st.excluded_at_once << " of "
             << st.chart_combinations << " chart combinations excluded at once"
             << (st.placements_excluded ? ", " + std::to_string(st.placements_excluded) + " combinations of placements excluded (shared points at distances that differ)" : std::string())
+            << (st.excluded_by_propagation ? ", " + std::to_string(st.excluded_by_propagation) + " chart combinations never built (excluded by propagation along the tree)" : std::string())
             << (st.planned_systems ? ", " + std::to_string(st.planned_systems) + " systems solved along their solution plan (" +
                                          std::to_string(st.block_solves) + " block solves, " + std::to_string(st.excluded_by_plan) +
                                          " combinations excluded by a block without roots)"

@@ -28,6 +28,8 @@
 #include <CGAL/Rigid_incidence/incidence_tree_parametrization.h>
 #include <CGAL/Rigid_incidence/Reduced_system.h>
 #include <CGAL/Rigid_incidence/Configuration.h>
+#include <CGAL/Rigid_incidence/Tree_system.h>
+#include <CGAL/Rigid_incidence/solve_tree_system.h>
 #include <CGAL/Rigid_incidence/solve_scene.h>
 #include <CGAL/Rigid_incidence/solve_family.h>
 #include <CGAL/Rigid_incidence/naive_systems.h>

@@ -58,7 +58,7 @@ struct Outcome
 };
 
 static Outcome solve(const RI::Scene& scene, bool plan = true, double seconds = 0, const std::atomic<bool>* interrupt = nullptr,
-                     bool over_charts = true)
+                     bool over_charts = true, bool propagation = true)
 {
   Outcome o;
   RI::Rigid_body_collection<Traits> input = RI::make_collection<Traits>(scene);
@@ -70,6 +70,7 @@ static Outcome solve(const RI::Scene& scene, bool plan = true, double seconds = 
   p.maximal_coefficient_precision = 53;  // (one pass: a retry would solve some systems twice)
   p.solve_with_plan = plan;
   p.plan_over_charts = over_charts;
+  p.chart_propagation = propagation;
   p.maximal_seconds = seconds;
   p.interrupt = interrupt;
   if (RI::exact_coefficients(c, t)) o.result = RI::solve_scene<CGAL::Interval_nt<false>, CGAL::Gmpq>(input, c, t, wf, p);
@@ -90,8 +91,9 @@ static void against_the_solve(const std::string& name, const Outcome& o)
   std::cout << name << ": " << RI::internal::describe_work(o.work) << "; the solve: " << st.chart_combinations << " systems, "
             << st.placements_excluded << " excluded at once, " << o.result.configurations.size() << " configurations\n";
   CHECK(o.result.precision_history.empty(), name << ": solved in one pass");
-  CHECK(st.chart_combinations + st.placements_excluded == o.work.systems(),
-        name << ": the solve built " << st.chart_combinations << " systems and excluded " << st.placements_excluded
+  CHECK(st.chart_combinations + st.placements_excluded + st.excluded_by_propagation == o.work.systems(),
+        name << ": the solve built " << st.chart_combinations << " systems and excluded " << st.placements_excluded << " + "
+             << st.excluded_by_propagation
              << ", the estimate says " << o.work.systems());
   CHECK(o.work.variables == o.result.variables.size() && o.work.equations == o.result.equations,
         name << ": the reduced system's size");
@@ -154,7 +156,7 @@ static void along_the_plan()
     // plan once solved to 0 configurations): over the charts, each combination alone along
     // its plan, and whole, the same configurations
     const RI::Scene scene = read(td + "/plan_three_blocks.json");
-    const Outcome charted = solve(scene), alone = solve(scene, true, 0, nullptr, false), whole = solve(scene, false);
+    const Outcome charted = solve(scene), alone = solve(scene, true, 0, nullptr, false, false), whole = solve(scene, false);
     const auto labels = point_labels(scene);
     const auto& a = charted.result.statistics;
     const auto& b = alone.result.statistics;

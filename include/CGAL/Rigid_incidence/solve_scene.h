@@ -19,6 +19,7 @@
 #include <CGAL/Rigid_incidence/Solution_plan.h>
 #include <CGAL/Rigid_incidence/Subdivision_solver.h>
 #include <CGAL/Rigid_incidence/enclose_coordinates.h>
+#include <CGAL/Rigid_incidence/solve_tree_system.h>
 #include <CGAL/Rigid_incidence/solve_with_plan.h>
 
 #include <boost/graph/adjacency_list.hpp>
@@ -126,6 +127,14 @@ struct Scene_solve_parameters
   /// reduced system is square with more than one block, in a first pass. false: each chart
   /// combination solved along its plan alone (the tests' oracle).
   bool plan_over_charts = true;
+  /// Before the chart combinations of a scene whose incidence tree is made of hinges (and
+  /// whose covering bodies all have coordinates) are built, choose the hinges' charts lazily
+  /// along the tree (`solve_tree_system()` with `Tree_solver_parameters::charts_only`: the
+  /// equations evaluated through the tree, never expanded, each contracting the hinges it
+  /// involves): a combination every box of which that propagation excludes is never built nor
+  /// solved (`Scene_solve_statistics::excluded_by_propagation`). false: every combination
+  /// (the tests' oracle).
+  bool chart_propagation = true;
   /// Called after each combination of charts and placements is solved (empty: never), one call
   /// at a time and in the order of the combinations, from the thread that called
   /// `solve_scene()` or, with `solver.threads` other than 1, from any thread of the solve; the
@@ -234,6 +243,9 @@ struct Scene_solve_statistics
   /// chart combinations never built: solved along the plan over the charts
   /// (`solve_with_plan_over_charts()`), a block before their last had no root in its charts
   std::size_t excluded_by_plan = 0;
+  /// chart combinations never built: propagating the equations along the tree of hinges
+  /// excluded every box of theirs (`Scene_solve_parameters::chart_propagation`)
+  std::size_t excluded_by_propagation = 0;
   std::size_t curve_boxes = 0;             ///< boxes visited by the curve tracer, all systems
   double reduce_seconds = 0;               ///< building the reduced systems
   double solve_seconds = 0;                ///< the subdivision solver
@@ -1452,6 +1464,27 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
     ++done;
     report();
   };
+  // The charts the hinges can take together, chosen along the tree (chart_propagation): the
+  // combinations it excludes are never built. Computed once (one placement combination: the
+  // covering bodies all have coordinates); a propagation the budget or a stop cuts short
+  // excludes nothing.
+  std::optional<std::set<std::vector<int>>> propagated;
+  if (!retry && !one_dof && parameters.chart_propagation && per_placement > 1 && total == per_placement &&
+      Tree_system<Traits>::unsupported(c, tree).empty()) {
+    auto t1 = Clock::now();
+    std::optional<Tree_system<Traits>> ts;
+    try { ts.emplace(c, tree, selection); } catch (const Input_error&) {}  // (an optimization only: every combination then)
+    if (ts && ts->is_square()) {
+      Tree_solver_parameters tp;
+      tp.charts_only = true;
+      tp.maximal_boxes = 16 * per_placement;
+      tp.interrupt = parameters.interrupt;
+      if (parameters.maximal_seconds > 0) tp.maximal_seconds = (std::max)(1e-3, parameters.maximal_seconds - since(started));
+      Tree_solve_result tr = solve_tree_system(*ts, tp);
+      if (tr.stopped.empty()) propagated = std::move(tr.chart_combinations);
+    }
+    st.solve_seconds += since(t1);
+  }
   // One chart combination per placement combination (no tree edge with charts: a merged
   // rigid part's placements, a tree or strip of bodies known by distances): the placement
   // combinations themselves are built and solved in parallel, and taken in their order.
@@ -1644,6 +1677,7 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
         std::vector<int> ch = next_charts;
         more_charts = internal::next_combination(next_charts, radix_c);
         if (retry && !retry->only.count(Scene_combination(placements, ch))) continue;
+        if (propagated && !propagated->count(ch)) { ++st.excluded_by_propagation; ++done; continue; }
         if ((stopped = stop_reason())) return more_charts = false;
         if (!base_tried) {
           auto t1 = Clock::now();

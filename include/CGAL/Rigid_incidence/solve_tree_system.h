@@ -1,0 +1,570 @@
+// Copyright (c) 2026 Rigid_incidence contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Branch and prune over a Tree_system: charts chosen lazily, each equation contracting the
+// variables it involves, Krawczyk certification.
+
+#ifndef CGAL_RIGID_INCIDENCE_SOLVE_TREE_SYSTEM_H
+#define CGAL_RIGID_INCIDENCE_SOLVE_TREE_SYSTEM_H
+
+#include <CGAL/Rigid_incidence/Solver_result.h>
+#include <CGAL/Rigid_incidence/Tree_system.h>
+#include <Eigen/Dense>
+#include <atomic>
+#include <chrono>
+#include <functional>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Rigid_incidence {
+
+/// \ingroup PkgRigidIncidenceSolver
+/// Parameters of `solve_tree_system()`. Widths are in the hinges' chart parameters ([-1, 1]).
+struct Tree_solver_parameters
+{
+  /// a certified root is tightened until its enclosure is at most this wide (or stops shrinking)
+  double tolerance = 1e-12;
+  /// a box at most this wide in every variable, neither excluded nor certified, is `UNKNOWN`
+  double minimal_width = 1e-9;
+  /// hinges whose chart is chosen are bisected down to this width before the chart of another
+  /// hinge is chosen, and the Krawczyk test is tried on boxes at most this wide
+  double split_width = 0.125;
+  /// rounds of contraction per box (each equation on its variables, then all at once), at most
+  int contraction_rounds = 6;
+  /// of which the first ones also slice the variables of short equations
+  int slicing_rounds = 1;
+  /// stop at boxes whose charts are all chosen, and list their chart combinations
+  bool charts_only = false;
+  /// at most this many boxes; what is left is `PENDING` ("box budget exhausted")
+  std::size_t maximal_boxes = 5000000;
+  /// wall-clock budget in seconds (0: none); what is left is `PENDING` ("time limit")
+  double maximal_seconds = 0;
+  /// set by another thread or a signal handler: the solve stops, the rest `PENDING` ("interrupted")
+  const std::atomic<bool>* interrupt = nullptr;
+  /// called every 4096 boxes with the boxes visited and the roots found so far (empty: never)
+  std::function<void(std::size_t, std::size_t)> progress;
+};
+
+/// \ingroup PkgRigidIncidenceSolver
+/// A root of a `Tree_system`: per variable its chart and an enclosure in that chart.
+struct Tree_root
+{
+  std::vector<int> charts;                                ///< per hinge, 0 or 1
+  std::vector<CGAL::Interval_nt<false>> enclosure;        ///< contains the root
+  std::vector<CGAL::Interval_nt<false>> uniqueness_box;   ///< the box in which the root is proved the only one
+  std::vector<double> approximation;                      ///< the enclosure's midpoint
+  bool certified = true;                                  ///< Krawczyk: always, for a root
+};
+
+/// \ingroup PkgRigidIncidenceSolver
+/// A region `solve_tree_system()` could not decide (one box, or a hull of touching boxes).
+struct Tree_region
+{
+  Box_class kind = Box_class::UNKNOWN;                    ///< `UNKNOWN` or `PENDING`
+  std::string reason;                                     ///< why
+  std::vector<int> charts;                                ///< per hinge, 0, 1 or -1 (the whole circle: no chart chosen yet)
+  std::vector<std::pair<double, double>> box;             ///< per hinge, in its chart (ignored for -1)
+  std::size_t boxes = 1;                                  ///< how many boxes it merges
+};
+
+/// \ingroup PkgRigidIncidenceSolver
+/// The result of `solve_tree_system()`.
+struct Tree_solve_result
+{
+  std::vector<Tree_root> roots;         ///< certified roots, one per root (in the order found)
+  std::vector<Tree_region> unresolved;  ///< unknown and pending regions
+  Solver_statistics statistics;         ///< counters
+  std::string stopped;                  ///< empty, or why the search stopped early
+  std::set<std::vector<int>> chart_combinations; ///< with `charts_only`: the combinations not excluded
+  /// no region left
+  bool complete() const { return unresolved.empty(); }
+};
+
+namespace internal {
+
+class Tree_branch_and_prune_base
+{
+public:
+  typedef CGAL::Interval_nt<false> IT;
+  static double width(const IT& x) { return x.sup() - x.inf(); }
+  static double mid(const IT& x) { return 0.5 * x.inf() + 0.5 * x.sup(); }
+  static bool contains_zero(const IT& x) { return x.inf() <= 0 && 0 <= x.sup(); }
+  static bool empty_meet(const IT& a, const IT& b) { return a.sup() < b.inf() || b.sup() < a.inf(); }
+  static IT meet(const IT& a, const IT& b) { return IT((std::max)(a.inf(), b.inf()), (std::min)(a.sup(), b.sup())); }
+};
+
+} // namespace internal
+
+/*!
+\ingroup PkgRigidIncidenceSolver
+\brief Every real root of a square `Tree_system`, by branch and prune over the hinges' circles.
+
+The search starts from one box: every hinge `WHOLE` (both charts). Then, box by box (depth
+first, so the answer does not depend on anything but the system):
+1. <b>Chart choice.</b> An equation with one hinge left whose chart is not chosen is evaluated
+   with that hinge in each chart: a chart where it cannot vanish is dropped (both: the box is
+   excluded).
+2. <b>Contraction</b> (each equation on the variables it involves, as IBEX's contractors do
+   for sparse systems, to a fixed point): with the enclosure J of its gradient over the box
+   and its value at the centre m, every point of the box where the equation vanishes has
+   \f$x_j \in m_j - (f(m) + \sum_{i \ne j} J_i (x_i - m_i)) / J_j\f$ (mean value theorem), which
+   cuts variable j where \f$0 \notin J_j\f$; a box where the natural or the mean-value enclosure
+   of an equation excludes 0 is excluded.
+3. <b>Certification</b> on a box with every chart chosen and at most `split_width` wide: the
+   Krawczyk operator \f$K = m - Y f(m) + (I - Y J(X'))(X' - m)\f$ on the box inflated by 5 %
+   (Y the inverse of the Jacobian at m) proves a unique root in X' when \f$K \subset X'\f$ (the
+   root is then tightened by iterating it); \f$K \cap X = \emptyset\f$ excludes the box; else the
+   box is cut to \f$K \cap X\f$.
+4. <b>Split.</b> While a hinge whose chart is chosen is wider than `split_width`, the widest
+   is bisected; else, while a hinge has no chart, the one in the equation with the fewest
+   unchosen hinges is split into its two charts; else the variable of largest relative smear
+   (\f$\sum_e |J_{ej}| w_j / \sum_i |J_{ei}| w_i\f$) is bisected.
+A chart is thus chosen only where a box must be split on that hinge, and the combinations of
+charts the equations exclude on a coarse box are never enumerated. `solve_scene()` uses it with
+`Tree_solver_parameters::charts_only` to leave out the chart combinations it excludes before
+they are built (`Scene_solve_parameters::chart_propagation`). As a solver of whole scenes it is
+not yet competitive: its first-order enclosures prune coarse boxes far less than the Bernstein
+hull of the expanded system, and a chain's boxes grow about 4 times per body (see the user
+manual, \ref RI_tree_propagation).
+
+Roots are certified (the Krawczyk test is a proof in outward-rounded double intervals); a root
+found from two neighbouring boxes is kept once (its enclosure lies in the other's uniqueness
+box). A root on the border between two charts (a hinge at t = +-1, s = +-1) is found in both:
+the caller merges them (`solve_scene()` compares the configurations). Boxes at the minimal width
+are `UNKNOWN`; a budget or an interrupt leaves the rest `PENDING`.
+*/
+template <class Traits>
+Tree_solve_result solve_tree_system(const Tree_system<Traits>& S, const Tree_solver_parameters& P = Tree_solver_parameters())
+{
+  typedef CGAL::Interval_nt<false> IT;
+  typedef internal::Tree_branch_and_prune_base B;
+  typedef std::chrono::steady_clock Clock;
+  const Clock::time_point started = Clock::now();
+  CGAL::Protect_FPU_rounding<true> guard;
+  const std::size_t n = S.number_of_variables(), ne = S.number_of_equations();
+  const int WHOLE = Tree_system<Traits>::WHOLE;
+  if (!S.is_square()) throw Input_error("solve_tree_system: the system is not square");
+  Tree_solve_result out;
+  Solver_statistics& st = out.statistics;
+  // a box; `groups`: where slicing left a variable in separate pieces (or in both charts), the
+  // pieces, which the split takes as the children
+  struct Piece { int ch; IT x; };
+  struct Box { std::vector<int> ch; std::vector<IT> x; std::size_t group_variable = std::size_t(-1); std::vector<Piece> groups; };
+  std::vector<Box> stack;
+  stack.push_back({std::vector<int>(n, WHOLE), std::vector<IT>(n, IT(-1, 1))});
+  std::vector<Box> unknown;
+  std::vector<std::string> unknown_reason;
+
+  auto whole_count = [&](std::size_t e, const Box& b, std::size_t* which) {
+    std::size_t k = 0;
+    for (std::size_t v : S.equations()[e].variables)
+      if (b.ch[v] == WHOLE) { ++k; if (which) *which = v; }
+    return k;
+  };
+  typedef Tree_system<Traits> TS;
+  typename TS::Workspace ws;
+  std::vector<IT> A;
+  std::vector<std::vector<IT>> rows(ne);
+  std::vector<IT> C(ne);
+  // x_j from eps_j in [-1, 1]: t0 + r eps
+  auto from_eps = [&](const IT& x, const IT& eps) {
+    double t0, r;
+    TS::centre_radius(x, t0, r);
+    return IT(t0) + IT(r) * eps;
+  };
+  // variable v of box b in 8 slices (16 over both charts when `whole`): the runs of slices on
+  // which equation e can vanish (its first-order enclosure contains 0), merged, in `kept`
+  auto slice = [&](Box& b, std::size_t e, std::size_t v, bool whole, std::vector<Piece>& kept) {
+    const int K = 8;
+    const int saved_ch = b.ch[v];
+    const IT saved = b.x[v];
+    kept.clear();
+    for (int ch = 0; ch < 2; ++ch) {
+      if (!whole && ch != saved_ch) continue;
+      const IT range = whole ? IT(-1, 1) : saved;
+      const double lo = range.inf(), hi = range.sup();
+      b.ch[v] = whole ? ch : saved_ch;
+      bool open = false;
+      for (int k = 0; k < K; ++k) {
+        const double a = k == 0 ? lo : lo + (hi - lo) * k / K, z = k == K - 1 ? hi : lo + (hi - lo) * (k + 1) / K;
+        b.x[v] = IT(a, z);
+        const IT c = S.evaluate(e, b.ch, b.x, A, &ws);
+        if (B::contains_zero(TS::range(c, A))) {
+          if (open) kept.back().x = IT(kept.back().x.inf(), z);
+          else kept.push_back({b.ch[v], IT(a, z)});
+          open = true;
+        } else {
+          open = false;
+        }
+      }
+    }
+    b.ch[v] = saved_ch;
+    b.x[v] = saved;
+    return true;
+  };
+  // steps 1 and 2; false: excluded
+  auto contract = [&](Box& b) {
+    b.groups.clear();
+    b.group_variable = std::size_t(-1);
+    for (int round = 0; round < P.contraction_rounds; ++round) {
+      bool changed = false;
+      bool all_chosen = true;
+      for (std::size_t e = 0; e < ne; ++e) {
+        std::size_t j = 0;
+        const std::size_t w = whole_count(e, b, &j);
+        if (w == 1) {
+          // the hinge's circle in slices, both charts: the ones where the equation can vanish
+          std::vector<Piece> kept;
+          if (!slice(b, e, j, true, kept)) return false;
+          b.ch[j] = WHOLE;
+          b.x[j] = IT(-1, 1);
+          if (kept.empty()) return false;
+          if (kept.front().ch == kept.back().ch) {
+            b.ch[j] = kept.front().ch;
+            b.x[j] = IT(kept.front().x.inf(), kept.back().x.sup());
+            changed = true;
+            if (kept.size() > 1) { b.group_variable = j; b.groups = kept; }
+          } else {
+            b.group_variable = j;
+            b.groups = kept;
+          }
+          all_chosen = false;
+          continue;
+        }
+        const IT c = S.evaluate(e, b.ch, b.x, A, &ws);
+        if (!B::contains_zero(TS::range(c, A))) return false;
+        if (w > 1) { all_chosen = false; continue; }
+        const auto& vars = S.equations()[e].variables;
+        // each variable from the others: 0 in c + sum_i A_i eps_i
+        for (std::size_t i = 0; i < vars.size(); ++i) {
+          if (B::contains_zero(A[i])) continue;
+          IT rest = c;
+          for (std::size_t l = 0; l < vars.size(); ++l)
+            if (l != i) rest += CGAL::abs(A[l]).sup() * IT(-1, 1);
+          const IT eps = B::meet(IT(-1, 1), (-rest) / A[i]);
+          if (B::empty_meet(IT(-1, 1), (-rest) / A[i])) return false;
+          IT& xi = b.x[vars[i]];
+          const IT cand = from_eps(xi, eps);
+          if (B::empty_meet(xi, cand)) return false;
+          const IT nx = B::meet(xi, cand);
+          if (B::width(nx) < 0.9 * B::width(xi)) changed = true;
+          xi = nx;
+        }
+        // short equations: each variable's slices (what projecting a Bernstein form gives)
+        if (vars.size() <= 3 && round < P.slicing_rounds)
+          for (std::size_t v2 : vars) {
+            if (B::width(b.x[v2]) <= P.split_width / 8) continue;
+            std::vector<Piece> kept;
+            const IT before = b.x[v2];
+            if (!slice(b, e, v2, false, kept) || kept.empty()) return false;
+            b.x[v2] = IT(kept.front().x.inf(), kept.back().x.sup());
+            if (B::width(b.x[v2]) < 0.9 * B::width(before)) changed = true;
+            if (kept.size() > 1) { b.group_variable = v2; b.groups = kept; }
+            else if (b.group_variable == v2) b.groups.clear();
+          }
+      }
+      // every chart chosen: the preconditioned linear step on all the equations at once,
+      // eps in -Y C + (I - Y A) [-1, 1]^n with Y the inverse of mid(A)
+      if (all_chosen) {
+        Eigen::MatrixXd M(ne, n);
+        M.setZero();
+        for (std::size_t e = 0; e < ne; ++e) {
+          C[e] = S.evaluate(e, b.ch, b.x, A, &ws);
+          rows[e].assign(n, IT(0));
+          const auto& vars = S.equations()[e].variables;
+          for (std::size_t i = 0; i < vars.size(); ++i) {
+            rows[e][vars[i]] = A[i];
+            M(Eigen::Index(e), Eigen::Index(vars[i])) = B::mid(A[i]);
+          }
+        }
+        Eigen::FullPivLU<Eigen::MatrixXd> lu(M);
+        if (lu.isInvertible()) {
+          const Eigen::MatrixXd Y = lu.inverse();
+          if (Y.allFinite()) {
+            std::vector<IT> nx(n);
+            for (std::size_t i = 0; i < n; ++i) {
+              IT v(0);
+              for (std::size_t e = 0; e < ne; ++e) v -= IT(Y(Eigen::Index(i), Eigen::Index(e))) * C[e];
+              for (std::size_t j2 = 0; j2 < n; ++j2) {
+                IT cij = IT(i == j2 ? 1.0 : 0.0);
+                for (std::size_t e = 0; e < ne; ++e) cij -= IT(Y(Eigen::Index(i), Eigen::Index(e))) * rows[e][j2];
+                v += CGAL::abs(cij).sup() * IT(-1, 1);
+              }
+              if (B::empty_meet(v, IT(-1, 1))) return false;
+              nx[i] = from_eps(b.x[i], B::meet(v, IT(-1, 1)));
+              if (B::empty_meet(nx[i], b.x[i])) return false;
+            }
+            for (std::size_t i = 0; i < n; ++i) {
+              const IT m2 = B::meet(nx[i], b.x[i]);
+              if (B::width(m2) < 0.9 * B::width(b.x[i])) changed = true;
+              b.x[i] = m2;
+            }
+          }
+        }
+      }
+      if (!changed) return true;
+    }
+    return true;
+  };
+  std::vector<IT> grad;
+  // the Jacobian over a box (rows over all variables)
+  auto jacobian = [&](const std::vector<int>& ch, const std::vector<IT>& x, std::vector<std::vector<IT>>& J) {
+    J.assign(ne, std::vector<IT>(n, IT(0)));
+    for (std::size_t e = 0; e < ne; ++e) {
+      S.gradient(e, ch, x, grad);
+      const auto& vars = S.equations()[e].variables;
+      for (std::size_t i = 0; i < vars.size(); ++i) J[e][vars[i]] = grad[i];
+    }
+  };
+  auto values = [&](const std::vector<int>& ch, const std::vector<double>& m) {
+    std::vector<IT> f(ne);
+    for (std::size_t e = 0; e < ne; ++e) f[e] = S.value(e, ch, m);
+    return f;
+  };
+  enum Outcome { ROOT, EXCLUDED, UNDECIDED, SINGULAR };
+  // Krawczyk on x (inflated by `inflate`); on ROOT, `k` is the operator's box and `xx` the box
+  // it was proved on
+  std::vector<std::vector<IT>> J;
+  auto krawczyk = [&](const std::vector<int>& ch, const std::vector<IT>& x, double inflate, std::vector<IT>& k, std::vector<IT>& xx) {
+    ++st.krawczyk_tests;
+    xx = x;
+    std::vector<double> m(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      m[i] = B::mid(x[i]);
+      const double r = inflate * B::width(x[i]) + 1e-300;
+      xx[i] = IT(x[i].inf() - r, x[i].sup() + r);
+    }
+    std::vector<IT> f = values(ch, m);
+    // Y: the inverse of the Jacobian's midpoint at m
+    std::vector<IT> xm2(n);
+    for (std::size_t i = 0; i < n; ++i) xm2[i] = IT(m[i]);
+    jacobian(ch, xm2, J);
+    Eigen::MatrixXd Am(ne, n);
+    for (std::size_t e = 0; e < ne; ++e)
+      for (std::size_t i = 0; i < n; ++i) Am(Eigen::Index(e), Eigen::Index(i)) = B::mid(J[e][i]);
+    Eigen::FullPivLU<Eigen::MatrixXd> lu(Am);
+    if (!lu.isInvertible()) return SINGULAR;
+    Eigen::MatrixXd Y = lu.inverse();
+    if (!Y.allFinite()) return SINGULAR;
+    jacobian(ch, xx, J);
+    k.assign(n, IT(0));
+    bool inside = true;
+    for (std::size_t i = 0; i < n; ++i) {
+      IT v = IT(m[i]);
+      for (std::size_t e = 0; e < ne; ++e) v -= IT(Y(Eigen::Index(i), Eigen::Index(e))) * f[e];
+      for (std::size_t j = 0; j < n; ++j) {
+        IT c = IT(i == j ? 1.0 : 0.0);
+        for (std::size_t e = 0; e < ne; ++e) c -= IT(Y(Eigen::Index(i), Eigen::Index(e))) * J[e][j];
+        v += c * (xx[j] - m[j]);
+      }
+      k[i] = v;
+      if (B::empty_meet(v, xx[i])) return EXCLUDED;
+      inside = inside && xx[i].inf() < v.inf() && v.sup() < xx[i].sup();
+    }
+    return inside ? ROOT : UNDECIDED;
+  };
+  auto stop_reason = [&]() -> std::string {
+    if (P.interrupt && P.interrupt->load(std::memory_order_relaxed)) return "interrupted";
+    if (P.maximal_seconds > 0 && std::chrono::duration<double>(Clock::now() - started).count() >= P.maximal_seconds) return "time limit";
+    if (st.boxes >= P.maximal_boxes) return "box budget exhausted";
+    return std::string();
+  };
+  auto record_root = [&](const std::vector<int>& ch, std::vector<IT> enc, const std::vector<IT>& uniq) {
+    // tighten: Krawczyk on the enclosure until it is narrow or stops shrinking
+    for (int it = 0; it < 40; ++it) {
+      double w = 0;
+      for (const IT& v : enc) w = (std::max)(w, B::width(v));
+      if (w <= P.tolerance) break;
+      std::vector<IT> k, xx;
+      if (krawczyk(ch, enc, 0.0, k, xx) == SINGULAR) break;
+      std::vector<IT> next(n);
+      bool ok = true;
+      double nw = 0;
+      for (std::size_t i = 0; i < n; ++i) {
+        if (B::empty_meet(enc[i], k[i])) { ok = false; break; }
+        next[i] = B::meet(enc[i], k[i]);
+        nw = (std::max)(nw, B::width(next[i]));
+      }
+      if (!ok) break;  // (cannot happen: the root is in both)
+      const bool progress = nw < 0.75 * w;
+      enc = next;
+      if (!progress) break;
+    }
+    auto inside = [&](const std::vector<IT>& a, const std::vector<IT>& b) {
+      for (std::size_t i = 0; i < n; ++i) if (a[i].inf() < b[i].inf() || b[i].sup() < a[i].sup()) return false;
+      return true;
+    };
+    for (const Tree_root& r : out.roots)
+      if (r.charts == ch && (inside(enc, r.uniqueness_box) || inside(r.enclosure, uniq))) { ++st.duplicates; return; }
+    Tree_root r;
+    r.charts = ch;
+    r.enclosure = enc;
+    r.uniqueness_box = uniq;
+    for (const IT& v : enc) r.approximation.push_back(B::mid(v));
+    out.roots.push_back(std::move(r));
+  };
+
+  while (!stack.empty()) {
+    out.stopped = stop_reason();
+    if (!out.stopped.empty()) break;
+    Box b = std::move(stack.back());
+    stack.pop_back();
+    ++st.boxes;
+    if (P.progress && st.boxes % 4096 == 0) P.progress(st.boxes, out.roots.size());
+    if (!contract(b)) { ++st.excluded; continue; }
+    bool any_whole = false;
+    double widest = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (b.ch[i] == WHOLE) any_whole = true;
+      else widest = (std::max)(widest, B::width(b.x[i]));
+    }
+    if (P.charts_only && !any_whole) { out.chart_combinations.insert(b.ch); continue; }
+    if (!any_whole && widest <= P.split_width) {
+      std::vector<IT> k, xx;
+      const Outcome o = krawczyk(b.ch, b.x, 0.05, k, xx);
+      if (o == ROOT) { ++st.certified_boxes; record_root(b.ch, k, xx); continue; }
+      if (o == EXCLUDED) { ++st.excluded; continue; }
+      if (o == UNDECIDED) {
+        double nw = 0;
+        for (std::size_t i = 0; i < n; ++i) {
+          if (B::empty_meet(b.x[i], k[i])) { nw = -1; break; }
+          b.x[i] = B::meet(b.x[i], k[i]);
+          nw = (std::max)(nw, B::width(b.x[i]));
+        }
+        if (nw < 0) { ++st.excluded; continue; }
+        widest = nw;
+      }
+      if (widest <= P.minimal_width) {
+        unknown.push_back(b);
+        unknown_reason.push_back(o == SINGULAR ? "possible multiple root (singular Jacobian)" : "not certified at minimal width");
+        continue;
+      }
+    }
+    // split: into the pieces slicing left apart, if any
+    if (!b.groups.empty() && b.group_variable < n) {
+      const std::size_t gv = b.group_variable;
+      bool valid = true;
+      for (const Piece& g : b.groups) valid = valid && (b.ch[gv] == WHOLE || (g.ch == b.ch[gv] && !B::empty_meet(g.x, b.x[gv])));
+      if (valid) {
+        ++st.splits;
+        for (auto it = b.groups.rbegin(); it != b.groups.rend(); ++it) {
+          Box child = b;
+          child.groups.clear();
+          child.group_variable = std::size_t(-1);
+          child.ch[gv] = it->ch;
+          child.x[gv] = b.ch[gv] == WHOLE ? it->x : B::meet(it->x, b.x[gv]);
+          stack.push_back(std::move(child));
+        }
+        continue;
+      }
+    }
+    std::size_t v = n;
+    if (widest > P.split_width) {
+      double w = 0;
+      for (std::size_t i = 0; i < n; ++i)
+        if (b.ch[i] != WHOLE && B::width(b.x[i]) > w) { w = B::width(b.x[i]); v = i; }
+    } else if (any_whole) {
+      std::size_t best = std::size_t(-1), best_size = std::size_t(-1);
+      for (std::size_t e = 0; e < ne; ++e) {
+        std::size_t j = 0;
+        const std::size_t w = whole_count(e, b, &j);
+        if (w == 0) continue;
+        const std::size_t size = S.equations()[e].variables.size();
+        if (w < best || (w == best && size < best_size)) {
+          best = w;
+          best_size = size;
+          // the first unchosen hinge of the equation
+          for (std::size_t u : S.equations()[e].variables) if (b.ch[u] == WHOLE) { v = u; break; }
+        }
+      }
+      if (v == n) for (std::size_t i = 0; i < n; ++i) if (b.ch[i] == WHOLE) { v = i; break; }
+      ++st.splits;
+      Box c0 = b, c1 = b;
+      c0.ch[v] = 0;
+      c1.ch[v] = 1;
+      c0.x[v] = c1.x[v] = IT(-1, 1);
+      stack.push_back(std::move(c1));
+      stack.push_back(std::move(c0));
+      continue;
+    } else {
+      std::vector<double> smear(n, 0.0);
+      J.assign(ne, std::vector<IT>(n, IT(0)));
+      for (std::size_t e = 0; e < ne; ++e) {
+        S.evaluate(e, b.ch, b.x, A, &ws);
+        const auto& vars = S.equations()[e].variables;
+        for (std::size_t i = 0; i < vars.size(); ++i) J[e][vars[i]] = A[i];
+      }
+      for (std::size_t e = 0; e < ne; ++e) {
+        double total = 0;
+        for (std::size_t i = 0; i < n; ++i) total += CGAL::abs(J[e][i]).sup();
+        if (!(total > 0)) continue;
+        for (std::size_t i = 0; i < n; ++i) smear[i] += CGAL::abs(J[e][i]).sup() / total;
+      }
+      double best = -1;
+      for (std::size_t i = 0; i < n; ++i) {
+        if (B::width(b.x[i]) <= P.minimal_width) continue;
+        const double s = std::isfinite(smear[i]) ? smear[i] : 1e300;
+        if (s > best) { best = s; v = i; }
+      }
+      if (v == n) {
+        unknown.push_back(b);
+        unknown_reason.push_back("not certified at minimal width");
+        continue;
+      }
+    }
+    ++st.splits;
+    const double c = B::mid(b.x[v]);
+    Box lo = b, hi = b;
+    lo.x[v] = IT(b.x[v].inf(), c);
+    hi.x[v] = IT(c, b.x[v].sup());
+    stack.push_back(std::move(hi));
+    stack.push_back(std::move(lo));
+  }
+  // unknown boxes: touching ones of one chart combination merged
+  {
+    std::vector<bool> used(unknown.size(), false);
+    for (std::size_t i = 0; i < unknown.size(); ++i) {
+      if (used[i]) continue;
+      used[i] = true;
+      Tree_region r;
+      r.kind = Box_class::UNKNOWN;
+      r.reason = unknown_reason[i];
+      r.charts = unknown[i].ch;
+      std::vector<IT> hull = unknown[i].x;
+      for (bool grew = true; grew;) {
+        grew = false;
+        for (std::size_t j = 0; j < unknown.size(); ++j) {
+          if (used[j] || unknown[j].ch != r.charts) continue;
+          bool touch = true;
+          for (std::size_t k = 0; k < n; ++k) touch = touch && !B::empty_meet(hull[k], unknown[j].x[k]);
+          if (!touch) continue;
+          used[j] = true;
+          ++r.boxes;
+          grew = true;
+          for (std::size_t k = 0; k < n; ++k)
+            hull[k] = IT((std::min)(hull[k].inf(), unknown[j].x[k].inf()), (std::max)(hull[k].sup(), unknown[j].x[k].sup()));
+        }
+      }
+      for (const IT& h : hull) r.box.push_back({h.inf(), h.sup()});
+      out.unresolved.push_back(std::move(r));
+    }
+  }
+  // pending boxes: one region per box, in the order they would have been visited
+  for (auto it = stack.rbegin(); it != stack.rend(); ++it) {
+    Tree_region r;
+    r.kind = Box_class::PENDING;
+    r.reason = out.stopped;
+    r.charts = it->ch;
+    for (const IT& h : it->x) r.box.push_back({h.inf(), h.sup()});
+    out.unresolved.push_back(std::move(r));
+  }
+  st.seconds = std::chrono::duration<double>(Clock::now() - started).count();
+  return out;
+}
+
+} // namespace Rigid_incidence
+} // namespace CGAL
+
+#endif

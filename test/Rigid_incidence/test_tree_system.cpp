@@ -1,0 +1,266 @@
+// Copyright (c) 2026 Rigid_incidence contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Tree_system (the reduced system of a hinged scene evaluated along its incidence tree, never
+// expanded) and solve_tree_system() (branch and prune with charts chosen lazily). Oracles:
+// - the expanded reduced system (Reduced_system with exact coefficients) in the same chart
+//   combination: at random points, the tree's value times the hinges' denominators
+//   prod D_e^(rotation_degree / 2) is the expanded numerator;
+// - the enclosures themselves at random points of random boxes: the first-order (affine)
+//   enclosure contains every value, the gradient enclosure every gradient, and the gradient at
+//   a point agrees with central differences of the values;
+// - solve_scene() on the expanded systems: the same configurations (compared by every pairwise
+//   distance of the points, which no choice of frame changes), on chains of 4, 5 and 6
+//   hinged tetrahedra (6, 2 and 2 configurations) and on the ring of 7;
+// - solve_scene() with and without the chart propagation (Scene_solve_parameters::
+//   chart_propagation): the same configurations, point for point, and the combinations it
+//   excludes never built (two pairs of hinged bodies, each combination alone: 4 of 16;
+//   chains of 4 and 6: none);
+// - a box budget: the rest pending, the result not complete;
+// - a scene outside its reach (tetra: bodies known by distances in the covering set): refused,
+//   saying why.
+// Usage: test_tree_system
+
+#include <CGAL/Gmpq.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Rigid_incidence.h>
+#include <CGAL/Rigid_incidence/IO/read_scene.h>
+#include <CGAL/Rigid_incidence/solve_tree_system.h>
+
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "test_check.h"
+
+namespace RI = CGAL::Rigid_incidence;
+typedef RI::Rigid_incidence_traits<CGAL::Simple_cartesian<CGAL::Gmpq>> Traits;
+typedef CGAL::Interval_nt<false> IT;
+
+struct Loaded
+{
+  RI::Rigid_body_collection<Traits> input, c;
+  RI::Incidence_tree t;
+  RI::Well_formed_selection wf;
+};
+
+static Loaded load(const std::string& file)
+{
+  std::ifstream in(file);
+  const RI::Scene scene = RI::read_scene(in, file);
+  Loaded l{RI::make_collection<Traits>(scene), {}, {}, {}};
+  l.c = RI::standardize(l.input);
+  l.t = RI::optimal_incidence_tree(l.c);
+  l.wf = RI::select_well_formed_incidences(l.c, l.t);
+  return l;
+}
+
+static bool overlap(const IT& a, const IT& b, double slack)
+{
+  return a.inf() - slack <= b.sup() && b.inf() - slack <= a.sup();
+}
+
+// the tree's equations against the expanded ones, and the enclosures against point values
+static void check_evaluator(const std::string& name, const Loaded& l, std::mt19937_64& rng)
+{
+  RI::Tree_system<Traits> S(l.c, l.t, l.wf);
+  const std::size_t n = S.number_of_variables();
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::uniform_int_distribution<int> coin(0, 1);
+  for (int round = 0; round < 6; ++round) {
+    std::vector<int> charts(n);
+    for (int& ch : charts) ch = coin(rng);
+    RI::Reduced_system<Traits, CGAL::Gmpq> r(l.c, l.t, l.wf, charts);
+    CHECK(r.number_of_equations() == S.number_of_equations(), name << ": " << r.number_of_equations() << " expanded equations, "
+                                                                     << S.number_of_equations() << " along the tree");
+    if (r.number_of_equations() != S.number_of_equations()) return;
+    CGAL::Protect_FPU_rounding<true> guard;
+    for (int k = 0; k < 5; ++k) {
+      std::vector<double> x(n);
+      for (double& v : x) v = u(rng);
+      std::vector<IT> xi(x.begin(), x.end());
+      for (std::size_t e = 0; e < S.number_of_equations(); ++e) {
+        IT tree = S.value(e, charts, x);
+        IT scale(1);
+        for (std::size_t k2 = 0; k2 < n; ++k2)
+          for (unsigned p = 0; p < r.equations()[e].rotation_degree[k2] / 2; ++p)
+            scale *= r.parametrization().denominator(k2).template evaluate<IT>(xi);
+        const IT expanded = r.equations()[e].polynomial.template evaluate<IT>(xi);
+        const double mag = (std::max)(1.0, CGAL::abs(expanded).sup());
+        CHECK(overlap(tree * scale, expanded, 1e-9 * mag), name << " charts round " << round << " equation " << e << " ("
+                                                               << S.equations()[e].label << "): tree " << tree * scale
+                                                               << ", expanded " << expanded);
+      }
+      // a random box around x: its enclosures contain the values and gradients at its points
+      std::vector<IT> box(n);
+      for (std::size_t i = 0; i < n; ++i) {
+        const double w = std::pow(10.0, -1 - 4 * (u(rng) + 1) / 2);
+        box[i] = IT(x[i] - w, x[i] + w * (1 + u(rng)) / 2 + 1e-300);
+      }
+      for (std::size_t e = 0; e < S.number_of_equations(); ++e) {
+        std::vector<IT> A, G, g;
+        const IT C = S.evaluate(e, charts, box, A);
+        const IT range = RI::Tree_system<Traits>::range(C, A);
+        S.gradient(e, charts, box, G);
+        const auto& vars = S.equations()[e].variables;
+        for (int p = 0; p < 8; ++p) {
+          std::vector<double> y = x;
+          for (std::size_t i = 0; i < n; ++i) y[i] = box[i].inf() + (box[i].sup() - box[i].inf()) * (u(rng) + 1) / 2;
+          const IT v = S.value(e, charts, y);
+          CHECK(overlap(range, v, 0), name << " equation " << e << ": the affine enclosure " << range << " misses the value " << v);
+          std::vector<IT> yi(y.begin(), y.end());
+          S.gradient(e, charts, yi, g);
+          for (std::size_t j = 0; j < vars.size(); ++j) {
+            CHECK(overlap(G[j], g[j], 0), name << " equation " << e << " variable " << vars[j] << ": the gradient enclosure " << G[j]
+                                               << " misses " << g[j]);
+            // central differences
+            const double h = 1e-6;
+            std::vector<double> yp = y, ym = y;
+            yp[vars[j]] += h;
+            ym[vars[j]] -= h;
+            const double fd = (CGAL::to_double(S.value(e, charts, yp)) - CGAL::to_double(S.value(e, charts, ym))) / (2 * h);
+            const double gd = CGAL::to_double(g[j]);
+            CHECK(std::abs(fd - gd) <= 1e-4 * (1 + std::abs(gd)), name << " equation " << e << " variable " << vars[j] << ": derivative "
+                                                                    << gd << ", central difference " << fd);
+          }
+        }
+      }
+    }
+  }
+}
+
+// every pairwise distance of the placed points, in order
+static std::vector<double> shape(const std::vector<std::array<double, 3>>& p)
+{
+  std::vector<double> d;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    for (std::size_t j = i + 1; j < p.size(); ++j)
+      d.push_back(std::sqrt((p[i][0] - p[j][0]) * (p[i][0] - p[j][0]) + (p[i][1] - p[j][1]) * (p[i][1] - p[j][1]) +
+                            (p[i][2] - p[j][2]) * (p[i][2] - p[j][2])));
+  return d;
+}
+static double shape_distance(const std::vector<double>& a, const std::vector<double>& b)
+{
+  double m = 0;
+  for (std::size_t i = 0; i < a.size() && i < b.size(); ++i) m = (std::max)(m, std::abs(a[i] - b[i]));
+  return a.size() == b.size() ? m : 1e300;
+}
+
+static void check_solve(const std::string& name, const Loaded& l, std::size_t expected)
+{
+  RI::Tree_system<Traits> S(l.c, l.t, l.wf);
+  RI::Tree_solver_parameters P;
+  P.split_width = 0.0625;
+  const RI::Tree_solve_result r = RI::solve_tree_system(S, P);
+  CHECK(r.complete() && r.stopped.empty(), name << ": the tree solve is not complete (" << r.unresolved.size() << " regions; " << r.stopped << ")");
+  // the roots as shapes, one configuration per root (a root on a chart border is found in both charts)
+  std::vector<std::vector<double>> tree_shapes;
+  for (const auto& x : r.roots) {
+    CHECK(x.certified, name << ": a root not certified");
+    for (std::size_t i = 0; i < x.enclosure.size(); ++i)
+      CHECK(x.enclosure[i].sup() - x.enclosure[i].inf() <= 1e-9, name << ": a root enclosure " << x.enclosure[i] << " is wide");
+    RI::Incidence_tree_parametrization<Traits, IT> p(l.c, l.t, x.charts);
+    CGAL::Protect_FPU_rounding<true> guard;
+    auto poses = p.template poses<double>(x.approximation);
+    std::vector<std::array<double, 3>> pts(l.c.number_of_points(), {0, 0, 0});
+    for (std::size_t b : l.t.covering_set)
+      for (std::size_t i = 0; i < l.c.body(b).points.size(); ++i) {
+        const auto y = p.coordinates(b)[i];
+        std::array<double, 3> z;
+        for (int k = 0; k < 3; ++k) {
+          z[std::size_t(k)] = poses[b].t[std::size_t(k)];
+          for (int m = 0; m < 3; ++m) z[std::size_t(k)] += poses[b].R[std::size_t(3 * k + m)] * CGAL::to_double(y[std::size_t(m)]);
+        }
+        pts[l.c.body(b).points[i]] = z;
+      }
+    const auto sh = shape(pts);
+    bool seen = false;
+    for (const auto& o : tree_shapes) seen = seen || shape_distance(o, sh) < 1e-7;
+    if (!seen) tree_shapes.push_back(sh);
+  }
+  // the expanded systems' answer
+  RI::Scene_solve_parameters sp;
+  const RI::Scene_solve_result e = RI::solve_scene<IT, CGAL::Gmpq>(l.input, l.c, l.t, l.wf, sp);
+  CHECK(e.complete(), name << ": the expanded solve is not complete");
+  CHECK(tree_shapes.size() == e.configurations.size() && e.configurations.size() == expected,
+        name << ": " << tree_shapes.size() << " configurations along the tree, " << e.configurations.size() << " expanded, " << expected
+             << " expected");
+  for (const auto& conf : e.configurations) {
+    std::vector<std::array<double, 3>> pts(l.c.number_of_points());
+    for (std::size_t q = 0; q < l.c.number_of_points(); ++q) pts[q] = conf.configuration.points[l.input.point_index(l.c.label(q))];
+    const auto sh = shape(pts);
+    bool found = false;
+    for (const auto& o : tree_shapes) found = found || shape_distance(o, sh) < 1e-7;
+    CHECK(found, name << ": an expanded configuration has no root along the tree");
+  }
+  std::cout << name << ": " << tree_shapes.size() << " configurations (" << r.roots.size() << " roots), " << r.statistics.boxes << " boxes, "
+            << r.statistics.krawczyk_tests << " Krawczyk tests, " << r.statistics.seconds << " s\n";
+}
+
+// solve_scene() with the chart propagation against without it
+static void check_propagation(const std::string& name, const Loaded& l, std::size_t excluded)
+{
+  RI::Scene_solve_parameters on, off;
+  off.chart_propagation = false;
+  on.plan_over_charts = off.plan_over_charts = false;  // (each combination alone: the path the propagation filters)
+  const RI::Scene_solve_result a = RI::solve_scene<IT, CGAL::Gmpq>(l.input, l.c, l.t, l.wf, on);
+  const RI::Scene_solve_result b = RI::solve_scene<IT, CGAL::Gmpq>(l.input, l.c, l.t, l.wf, off);
+  CHECK(a.complete() && b.complete(), name << ": not complete with or without the propagation");
+  CHECK(a.statistics.excluded_by_propagation == excluded && b.statistics.excluded_by_propagation == 0,
+        name << ": " << a.statistics.excluded_by_propagation << " combinations excluded by propagation, " << excluded << " expected");
+  CHECK(a.statistics.chart_combinations + a.statistics.excluded_by_propagation == b.statistics.chart_combinations,
+        name << ": " << a.statistics.chart_combinations << " systems built and " << a.statistics.excluded_by_propagation << " excluded, "
+             << b.statistics.chart_combinations << " without the propagation");
+  CHECK(a.configurations.size() == b.configurations.size(), name << ": " << a.configurations.size() << " configurations with the propagation, "
+                                                                  << b.configurations.size() << " without");
+  for (std::size_t i = 0; i < a.configurations.size() && i < b.configurations.size(); ++i) {
+    double d = 0;
+    const auto &p = a.configurations[i].configuration.points, &q = b.configurations[i].configuration.points;
+    for (std::size_t k = 0; k < p.size() && k < q.size(); ++k)
+      for (int x = 0; x < 3; ++x) d = (std::max)(d, std::abs(p[k][std::size_t(x)] - q[k][std::size_t(x)]));
+    CHECK(d < 1e-9 && a.configurations[i].certified == b.configurations[i].certified && a.configurations[i].charts == b.configurations[i].charts,
+          name << ": configuration " << i << " differs with the propagation (" << d << ")");
+  }
+  std::cout << name << ": " << a.configurations.size() << " configurations; " << a.statistics.excluded_by_propagation << " of "
+            << b.statistics.chart_combinations << " chart combinations excluded by propagation\n";
+}
+
+int main()
+{
+  std::mt19937_64 rng(20261128);
+  const std::string dir = RIGID_INCIDENCE_TEST_DATA_DIR;
+  for (const std::string f : {"chain4.json", "chain5.json", "chain6.json", "ring7.json"}) check_evaluator(f, load(dir + "/" + f), rng);
+  check_solve("chain4.json", load(dir + "/chain4.json"), 6);
+  check_solve("chain5.json", load(dir + "/chain5.json"), 2);
+  check_solve("chain6.json", load(dir + "/chain6.json"), 2);
+  check_propagation("two_pairs_of_hinges.json", load(dir + "/two_pairs_of_hinges.json"), 4);
+  check_propagation("chain4.json", load(dir + "/chain4.json"), 0);
+  check_propagation("chain6.json", load(dir + "/chain6.json"), 0);
+  // a box budget: the rest pending
+  {
+    Loaded l = load(dir + "/chain6.json");
+    RI::Tree_system<Traits> S(l.c, l.t, l.wf);
+    RI::Tree_solver_parameters P;
+    P.maximal_boxes = 50;
+    const RI::Tree_solve_result r = RI::solve_tree_system(S, P);
+    CHECK(!r.complete() && r.stopped == "box budget exhausted" && r.statistics.boxes == 50, "a budget of 50 boxes: stopped '" << r.stopped << "' after "
+                                                                                              << r.statistics.boxes);
+    bool pending = !r.unresolved.empty();
+    for (const auto& u : r.unresolved) pending = pending && u.kind == RI::Box_class::PENDING;
+    CHECK(pending, "a budget of 50 boxes: the rest is not pending");
+  }
+  // not a tree of hinges: refused, the edge named
+  {
+    Loaded l = load(std::string(RIGID_INCIDENCE_DATA_DIR) + "/tetra.json");
+    const std::string why = RI::Tree_system<Traits>::unsupported(l.c, l.t);
+    CHECK(!why.empty(), "tetra.json: taken (implied bodies known by distances in its covering set)");
+    bool thrown = false;
+    try { RI::Tree_system<Traits> S(l.c, l.t, l.wf); } catch (const RI::Input_error& e) { thrown = std::string(e.what()).find(why) != std::string::npos; }
+    CHECK(thrown, "tetra.json: no Input_error saying why (" << why << ")");
+  }
+  std::cout << checks << " checks, " << failures << " failures\n";
+  return failures ? 1 : 0;
+}
