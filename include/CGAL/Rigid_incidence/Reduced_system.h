@@ -84,6 +84,45 @@ bool exact_coefficients(const Rigid_body_collection<Traits>& c, const Incidence_
   return true;
 }
 
+/// \ingroup PkgRigidIncidenceRef
+/// The constraints a reduced system keeps (`reduced_constraints()`).
+struct Reduced_constraints
+{
+  Constraint_independence independence; ///< the rank test of the system's constraints
+  std::vector<Constraint> equations;     ///< the ones written as equations, in order
+  std::vector<Constraint> left_out;      ///< dependent ones in conflict (an over-constrained scene)
+  std::vector<std::size_t> loose;        ///< bodies outside the covering set held by fewer than 3 covered points
+};
+
+/// \ingroup PkgRigidIncidenceRef
+/// The constraints of `system_constraints()` the reduced system writes as equations: the
+/// independent ones (`constraint_independence()`) but the incidences the tree eliminates; the
+/// dependent ones in conflict (a body's own surplus distance is left out silently); and the
+/// bodies outside the covering set that fewer than three covered points hold. Shared by
+/// `Reduced_system` and `Tree_system`, so that both write the same equations.
+template <class Traits>
+Reduced_constraints reduced_constraints(const Rigid_body_collection<Traits>& c, const Incidence_tree& tree, const Well_formed_selection& selection)
+{
+  Reduced_constraints r;
+  const std::vector<Constraint> ks = system_constraints(c, tree, selection);
+  r.independence = constraint_independence(c, tree.covering_set, ks);
+  for (std::size_t i = 0; i < ks.size(); ++i) {
+    if (!r.independence.independent[i]) {
+      if (!r.independence.follows_from_its_body(i)) r.left_out.push_back(ks[i]);
+      continue;
+    }
+    if (ks[i].origin != Constraint::TREE_INCIDENCE) r.equations.push_back(ks[i]);
+  }
+  std::vector<bool> covered(c.number_of_points(), false);
+  for (std::size_t b : tree.covering_set) for (std::size_t q : c.body(b).points) covered[q] = true;
+  for (std::size_t b : tree.non_covering) {
+    std::size_t n = 0;
+    for (std::size_t q : c.body(b).points) n += covered[q];
+    if (n < 3) r.loose.push_back(b);
+  }
+  return r;
+}
+
 /*!
 \ingroup PkgRigidIncidenceRef
 \brief The reduced system of a standard collection for an incidence tree, a chart per tree edge
@@ -131,24 +170,12 @@ public:
   {
     internal::Rounding_guard<NT> guard;
     (void)guard;
-    const std::vector<Constraint> ks = system_constraints(c, tree, selection);
-    independence_ = constraint_independence(c, tree.covering_set, ks);
-    for (std::size_t i = 0; i < ks.size(); ++i) {
-      if (!independence_.independent[i]) {
-        if (!independence_.follows_from_its_body(i)) left_out_.push_back(ks[i]);
-        continue;
-      }
-      if (ks[i].origin == Constraint::TREE_INCIDENCE) continue;
-      equations_.push_back(make_equation(ks[i]));
-    }
+    Reduced_constraints k = reduced_constraints(c, tree, selection);
+    independence_ = std::move(k.independence);
+    left_out_ = std::move(k.left_out);
+    loose_ = std::move(k.loose);
+    for (const Constraint& x : k.equations) equations_.push_back(make_equation(x));
     linearize_translations();
-    std::vector<bool> covered(c.number_of_points(), false);
-    for (std::size_t b : tree.covering_set) for (std::size_t q : c.body(b).points) covered[q] = true;
-    for (std::size_t b : tree.non_covering) {
-      std::size_t n = 0;
-      for (std::size_t q : c.body(b).points) n += covered[q];
-      if (n < 3) loose_.push_back(b);
-    }
   }
 
   /*!

@@ -8,6 +8,7 @@
 
 #include <CGAL/Interval_nt.h>
 #include <CGAL/Rigid_incidence/Input_error.h>
+#include <CGAL/Rigid_incidence/Reduced_system.h>
 #include <CGAL/Rigid_incidence/Rigid_body_collection.h>
 #include <CGAL/Rigid_incidence/incidence_tree_parametrization.h>
 #include <CGAL/Rigid_incidence/optimal_incidence_tree.h>
@@ -131,23 +132,11 @@ public:
       }
     }
     // the equations: the constraints Reduced_system keeps, in its order
-    const std::vector<Constraint> ks = system_constraints(c, tree, selection);
-    independence_ = constraint_independence(c, tree.covering_set, ks);
-    for (std::size_t i = 0; i < ks.size(); ++i) {
-      if (!independence_.independent[i]) {
-        if (!independence_.follows_from_its_body(i)) left_out_.push_back(ks[i]);
-        continue;
-      }
-      if (ks[i].origin == Constraint::TREE_INCIDENCE) continue;
-      equations_.push_back(make_equation(ks[i]));
-    }
-    std::vector<bool> covered(c.number_of_points(), false);
-    for (std::size_t b : tree.covering_set) for (std::size_t q : c.body(b).points) covered[q] = true;
-    for (std::size_t b : tree.non_covering) {
-      std::size_t k = 0;
-      for (std::size_t q : c.body(b).points) k += covered[q];
-      if (k < 3) loose_.push_back(b);
-    }
+    Reduced_constraints k = reduced_constraints(c, tree, selection);
+    independence_ = std::move(k.independence);
+    left_out_ = std::move(k.left_out);
+    loose_ = std::move(k.loose);
+    for (const Constraint& x : k.equations) equations_.push_back(make_equation(x));
   }
 
   /// Number of variables (one per hinge, in the order of the tree's edges).
