@@ -37,7 +37,8 @@ static const char* usage_text =
   "                         [--coefficients auto|exact|interval] [--kernel exact|epick|epeck]\n"
   "  rigid_incidence solve SCENE.json [--json] [--tolerance EPS] [--precision BITS] [--fast]\n"
   "                        [--svg FILE] [--plot A.x,B.z] [--near CONFIG.json] [--max-boxes N]\n"
-  "                        [--max-seconds S] [--quiet] [--no-plan] [--threads N] [--kernel K]\n"
+  "                        [--max-seconds S] [--quiet] [--no-plan] [--no-sweep] [--threads N]\n"
+  "                        [--kernel K]\n"
   "  rigid_incidence family SCENE.json [--json] [--svg FILE] [--samples K] [--tolerance EPS]\n"
   "                        [--precision BITS] [--max-boxes N] [--kernel K]\n"
   "  rigid_incidence solve-system FILE [--json] [--tolerance EPS] [--precision BITS] [--fast]\n"
@@ -101,7 +102,10 @@ static const char* usage_text =
   "            whole solve (what is not done by then is reported, the answer not complete);\n"
   "            a progress line on standard error when it is a terminal (--quiet: none);\n"
   "            a reduced system of several blocks (its solution plan) is solved block after\n"
-  "            block (--no-plan: whole, for comparison); --threads N: threads for the\n"
+  "            block (--no-plan: whole, for comparison); a chain of hinges braced by near\n"
+  "            distances (256 chart combinations or more) is solved along its tree by one\n"
+  "            sweep, nothing expanded (--no-sweep: per chart combination, for comparison);\n"
+  "            --threads N: threads for the\n"
   "            independent pieces (chart combinations, branches of a plan; default: every\n"
   "            core; 1: sequential), the same answer in the same order with any number;\n"
   "            Ctrl-C (SIGINT) or SIGTERM stops the solve and prints the partial answer,\n"
@@ -556,6 +560,9 @@ int main(int argc, char** argv)
       if (o.command != "solve-system" && o.command != "solve") { std::cerr << "rigid_incidence: --no-plan is an option of solve and solve-system\n"; return 1; }
       o.no_plan = true;
       o.solve.no_plan = true;
+    } else if (a == "--no-sweep") {
+      if (o.command != "solve") { std::cerr << "rigid_incidence: --no-sweep is an option of solve\n"; return 1; }
+      o.solve.no_sweep = true;
     } else if (a == "--fast") {
       if (o.command != "solve" && o.command != "solve-system") { std::cerr << "rigid_incidence: --fast is an option of solve\n"; return 1; }
       o.solve.fast = true;

@@ -39,6 +39,7 @@ struct Solve_options
   unsigned precision = 53;
   bool fast = false;
   bool no_plan = false;        // --no-plan: each reduced system solved whole (for comparison)
+  bool no_sweep = false;       // --no-sweep: never solved along the tree by a sweep (for comparison)
   std::size_t max_boxes = 0;   // 0: the solver's default
   std::string svg, near;
   std::string plot;  // --plot A.x,B.z: the coordinates plotted against each other for curves
@@ -450,6 +451,7 @@ RI::Scene_solve_result run(const RI::Scene& scene, const RI::Rigid_body_collecti
   if (o.max_boxes) p.solver.maximal_boxes = o.max_boxes;
   p.maximal_seconds = o.max_seconds;
   p.solve_with_plan = !o.no_plan;
+  p.sweep = !o.no_sweep;
   p.interrupt = &interrupted;
   Progress_line line;
   if (!o.quiet && isatty(2)) p.progress = std::ref(line);
@@ -604,6 +606,7 @@ int solve(const RI::Scene& scene, const RI::Rigid_body_collection<Traits>& input
                   {"duplicates_merged", st.duplicates}, {"spurious_rejected", st.spurious}, {"curve_boxes", st.curve_boxes},
                   {"placements_excluded", st.placements_excluded},
                   {"planned_systems", st.planned_systems}, {"block_solves", st.block_solves}, {"excluded_by_plan", st.excluded_by_plan}, {"excluded_by_propagation", st.excluded_by_propagation},
+                  {"swept", st.swept},
                   {"coefficient_width", st.coefficient_width}, {"threads", st.threads},
                   {"seconds", {{"analysis", analysis_seconds}, {"reduce", st.reduce_seconds}, {"solve", st.solve_seconds},
                                {"verify", st.verify_seconds}}}};
@@ -694,6 +697,7 @@ int solve(const RI::Scene& scene, const RI::Rigid_body_collection<Traits>& input
             << st.chart_combinations << " chart combinations excluded at once"
             << (st.placements_excluded ? ", " + std::to_string(st.placements_excluded) + " combinations of placements excluded (shared points at distances that differ)" : std::string())
             << (st.excluded_by_propagation ? ", " + std::to_string(st.excluded_by_propagation) + " chart combinations never built (excluded by propagation along the tree)" : std::string())
+            << (st.swept ? std::string(", solved along the tree by a sweep (no chart combination built)") : std::string())
             << (st.planned_systems ? ", " + std::to_string(st.planned_systems) + " systems solved along their solution plan (" +
                                          std::to_string(st.block_solves) + " block solves, " + std::to_string(st.excluded_by_plan) +
                                          " combinations excluded by a block without roots)"

@@ -16,6 +16,9 @@
 //   chart_propagation): the same configurations, point for point, and the combinations it
 //   excludes never built (two pairs of hinged bodies, each combination alone: 4 of 16;
 //   chains of 4 and 6: none);
+// - the sweep (a chain's driver hinge bisected, the others found in turn) against the same
+//   expanded answer, in solve_tree_system() and in solve_scene() (point for point), and the
+//   sweep cut by a time limit (not complete, saying why); sweep orders of hand-made supports;
 // - a box budget: the rest pending, the result not complete;
 // - a scene outside its reach (tetra: bodies known by distances in the covering set): refused,
 //   saying why.
@@ -149,11 +152,15 @@ static double shape_distance(const std::vector<double>& a, const std::vector<dou
   return a.size() == b.size() ? m : 1e300;
 }
 
-static void check_solve(const std::string& name, const Loaded& l, std::size_t expected)
+static void check_solve(const std::string& name, const Loaded& l, std::size_t expected, bool sweep)
 {
   RI::Tree_system<Traits> S(l.c, l.t, l.wf);
   RI::Tree_solver_parameters P;
   P.split_width = 0.0625;
+  P.sweep = sweep;
+  CHECK(RI::sweep_order(S).exists(S.number_of_variables()) && RI::sweep_order(S).driver != RI::Sweep_order::none &&
+            RI::sweep_order(S).checks.size() == 1,
+        name << ": a chain without a sweep order (a driver, the closing distance the one check)");
   const RI::Tree_solve_result r = RI::solve_tree_system(S, P);
   CHECK(r.complete() && r.stopped.empty(), name << ": the tree solve is not complete (" << r.unresolved.size() << " regions; " << r.stopped << ")");
   // the roots as shapes, one configuration per root (a root on a chart border is found in both charts)
@@ -183,6 +190,7 @@ static void check_solve(const std::string& name, const Loaded& l, std::size_t ex
   }
   // the expanded systems' answer
   RI::Scene_solve_parameters sp;
+  sp.sweep = false;
   const RI::Scene_solve_result e = RI::solve_scene<IT, CGAL::Gmpq>(l.input, l.c, l.t, l.wf, sp);
   CHECK(e.complete(), name << ": the expanded solve is not complete");
   CHECK(tree_shapes.size() == e.configurations.size() && e.configurations.size() == expected,
@@ -196,7 +204,7 @@ static void check_solve(const std::string& name, const Loaded& l, std::size_t ex
     for (const auto& o : tree_shapes) found = found || shape_distance(o, sh) < 1e-7;
     CHECK(found, name << ": an expanded configuration has no root along the tree");
   }
-  std::cout << name << ": " << tree_shapes.size() << " configurations (" << r.roots.size() << " roots), " << r.statistics.boxes << " boxes, "
+  std::cout << name << (sweep ? " (sweep)" : " (branch and prune)") << ": " << tree_shapes.size() << " configurations (" << r.roots.size() << " roots), " << r.statistics.boxes << " boxes, "
             << r.statistics.krawczyk_tests << " Krawczyk tests, " << r.statistics.seconds << " s\n";
 }
 
@@ -228,14 +236,73 @@ static void check_propagation(const std::string& name, const Loaded& l, std::siz
             << b.statistics.chart_combinations << " chart combinations excluded by propagation\n";
 }
 
+// solve_scene() solving along the tree by a sweep (Scene_solve_parameters::sweep, from 2
+// combinations on) against the expanded systems, combination by combination: the same
+// configurations, point for point; and the sweep cut by a time limit says so
+static void check_sweep_scene(const std::string& name, const Loaded& l)
+{
+  RI::Scene_solve_parameters on, off;
+  on.sweep_from = 2;
+  off.sweep = false;
+  const RI::Scene_solve_result a = RI::solve_scene<IT, CGAL::Gmpq>(l.input, l.c, l.t, l.wf, on);
+  const RI::Scene_solve_result b = RI::solve_scene<IT, CGAL::Gmpq>(l.input, l.c, l.t, l.wf, off);
+  CHECK(a.statistics.swept && !b.statistics.swept, name << ": swept " << a.statistics.swept << " / " << b.statistics.swept);
+  CHECK(a.complete() && b.complete(), name << ": not complete with or without the sweep");
+  CHECK(a.configurations.size() == b.configurations.size(), name << ": " << a.configurations.size() << " configurations by the sweep, "
+                                                                  << b.configurations.size() << " expanded");
+  for (const auto& x : a.configurations) {
+    CHECK(x.certified && x.max_relative_residual < 1e-12, name << ": a swept configuration not certified or with residual " << x.max_relative_residual);
+    double best = 1e300;
+    for (const auto& y : b.configurations) {
+      double d = 0;
+      const auto &p = x.configuration.points, &q = y.configuration.points;
+      for (std::size_t k = 0; k < p.size() && k < q.size(); ++k)
+        for (int c = 0; c < 3; ++c) d = (std::max)(d, std::abs(p[k][std::size_t(c)] - q[k][std::size_t(c)]));
+      best = (std::min)(best, d);
+    }
+    CHECK(best < 1e-9, name << ": a swept configuration is " << best << " from every expanded one");
+  }
+  // a time limit too short for the sweep: the answer says so and is not complete
+  RI::Scene_solve_parameters cut = on;
+  cut.maximal_seconds = 1e-6;
+  const RI::Scene_solve_result z = RI::solve_scene<IT, CGAL::Gmpq>(l.input, l.c, l.t, l.wf, cut);
+  CHECK(!z.complete() && !z.limits.empty() && z.limits.front().find("solving along the tree") != std::string::npos,
+        name << ": the sweep cut by a time limit: " << (z.limits.empty() ? std::string("no limit reported") : z.limits.front()));
+  std::cout << name << ": " << a.configurations.size() << " configurations by the sweep (" << a.statistics.boxes << " boxes), as expanded\n";
+}
+
+// sweep orders of hand-made supports
+static void check_sweep_orders()
+{
+  typedef std::vector<std::vector<std::size_t>> V;
+  // a band (x0-x1, x1-x2, x2-x3) and one equation in all: x0 drives, the last is the check
+  RI::Sweep_order o = RI::sweep_order(4, V{{0, 1}, {1, 2}, {2, 3}, {0, 1, 2, 3}});
+  CHECK(o.exists(4) && o.driver == 0 && o.steps.size() == 3 && o.checks == std::vector<std::size_t>{3}, "band: no sweep order from x0");
+  // triangular (x0 alone, then x0-x1): no driver
+  o = RI::sweep_order(2, V{{0, 1}, {0}});
+  CHECK(o.exists(2) && o.driver == RI::Sweep_order::none && o.steps.front().first == 1, "triangular: a driver where none is needed");
+  // the band x0-x2-x1 listed out of order: from x0 (the lowest of equal cost), x2 then x1
+  o = RI::sweep_order(3, V{{0, 1, 2}, {1, 2}, {0, 2}});
+  CHECK(o.exists(3) && o.driver == 0 && o.steps.size() == 2 && o.steps[0].second == 2 && o.steps[1].second == 1,
+        "band x0-x2-x1: driver " << o.driver);
+  // two equations in the same three variables each, and a third: no order with one driver
+  o = RI::sweep_order(3, V{{0, 1, 2}, {0, 1, 2}, {0, 1, 2}});
+  CHECK(!o.exists(3), "three equations in three variables each: a sweep order");
+}
+
 int main()
 {
+  check_sweep_orders();
   std::mt19937_64 rng(20261128);
   const std::string dir = RIGID_INCIDENCE_TEST_DATA_DIR;
   for (const std::string f : {"chain4.json", "chain5.json", "chain6.json", "ring7.json"}) check_evaluator(f, load(dir + "/" + f), rng);
-  check_solve("chain4.json", load(dir + "/chain4.json"), 6);
-  check_solve("chain5.json", load(dir + "/chain5.json"), 2);
-  check_solve("chain6.json", load(dir + "/chain6.json"), 2);
+  for (bool sweep : {true, false}) {
+    check_solve("chain4.json", load(dir + "/chain4.json"), 6, sweep);
+    check_solve("chain5.json", load(dir + "/chain5.json"), 2, sweep);
+    check_solve("chain6.json", load(dir + "/chain6.json"), 2, sweep);
+  }
+  check_sweep_scene("chain4.json", load(dir + "/chain4.json"));
+  check_sweep_scene("chain6.json", load(dir + "/chain6.json"));
   check_propagation("two_pairs_of_hinges.json", load(dir + "/two_pairs_of_hinges.json"), 4);
   check_propagation("chain4.json", load(dir + "/chain4.json"), 0);
   check_propagation("chain6.json", load(dir + "/chain6.json"), 0);

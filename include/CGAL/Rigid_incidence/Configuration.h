@@ -195,26 +195,17 @@ template <class NT> std::array<double, 3> to_double3(const std::array<NT, 3>& p)
 }
 } // namespace internal
 
+
 /*!
 \ingroup PkgRigidIncidenceRef
-\brief Back-substitution: the configuration of the scene for the parameter values `x` of the
-reduced system `r` (one per variable, e.g. a root the solver found).
-
-Every body of the covering set gets its pose from the tree's maps (composed root to leaf);
-each free point its three variables; a body outside the covering set the best rigid fit of
-its points that the covering set places (three or more, not collinear), which also places
-its own other points; for such a body known by distances, in its placement `variants[b]`
-(default 0: each placement is a configuration of its own when its own points differ, see
-`solve_scene()`). All of it is then expressed in the frame of the scene's frame body
-(`Rigid_body_collection::frame()`, by default the first body of the scene) when that body is
-placed, else in the root's frame (`Configuration::frame` says which).
+\brief Back-substitution, from the tree's parametrization `p` (of `c` and `tree`, in
+its chart combination) without a reduced system: what `solve_scene()` uses for the roots of a
+system solved along the tree (`Tree_system`), which is never expanded.
 */
 template <class Traits, class NT>
-Configuration configuration(const Reduced_system<Traits, NT>& r, const std::vector<double>& x, const std::vector<int>& variants = {})
+Configuration configuration(const Rigid_body_collection<Traits>& c, const Incidence_tree& tree, const Incidence_tree_parametrization<Traits, NT>& p,
+                            const std::vector<double>& x, const std::vector<int>& variants = {})
 {
-  const auto& c = r.collection();
-  const auto& p = r.parametrization();
-  const auto& tree = r.tree();
   if (x.size() != p.number_of_variables())
     throw Input_error("configuration: " + std::to_string(x.size()) + " values for " + std::to_string(p.number_of_variables()) + " variables");
   for (std::size_t i = 0; i < x.size(); ++i)
@@ -292,6 +283,26 @@ Configuration configuration(const Reduced_system<Traits, NT>& r, const std::vect
     conf.placed.push_back(conf.placed[q]);
   }
   return conf;
+}
+
+/*!
+\ingroup PkgRigidIncidenceRef
+\brief Back-substitution: the configuration of the scene for the parameter values `x` of the
+reduced system `r` (one per variable, e.g. a root the solver found).
+
+Every body of the covering set gets its pose from the tree's maps (composed root to leaf);
+each free point its three variables; a body outside the covering set the best rigid fit of
+its points that the covering set places (three or more, not collinear), which also places
+its own other points; for such a body known by distances, in its placement `variants[b]`
+(default 0: each placement is a configuration of its own when its own points differ, see
+`solve_scene()`). All of it is then expressed in the frame of the scene's frame body
+(`Rigid_body_collection::frame()`, by default the first body of the scene) when that body is
+placed, else in the root's frame (`Configuration::frame` says which).
+*/
+template <class Traits, class NT>
+Configuration configuration(const Reduced_system<Traits, NT>& r, const std::vector<double>& x, const std::vector<int>& variants = {})
+{
+  return configuration(r.collection(), r.tree(), r.parametrization(), x, variants);
 }
 
 /// \ingroup PkgRigidIncidenceRef

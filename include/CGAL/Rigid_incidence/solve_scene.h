@@ -135,6 +135,19 @@ struct Scene_solve_parameters
   /// solved (`Scene_solve_statistics::excluded_by_propagation`). false: every combination
   /// (the tests' oracle).
   bool chart_propagation = true;
+  /// A scene whose incidence tree is made of hinges (covering bodies with coordinates, no
+  /// bodies known by distances, no free points), whose system is square and has a sweep order
+  /// with a driver (`sweep_order()`: a chain of hinges braced by distances between near
+  /// neighbours) and at least `sweep_from` chart combinations is solved along its tree
+  /// (`solve_tree_system()`: the driver hinge bisected, every other hinge found from its
+  /// equation in turn, the charts chosen per box) instead of combination by combination: no
+  /// equation is expanded (a chain's closing distance has 3^(k-1) terms) and the work follows
+  /// the real branches, not the 2^(k-1) chart combinations (`Scene_solve_statistics::swept`).
+  /// false: never (the tests' oracle).
+  bool sweep = true;
+  /// the fewest chart combinations for which `sweep` is used (below, the expanded systems are
+  /// solved faster: chain of 8 tetrahedra, 128 combinations)
+  std::size_t sweep_from = 256;
   /// Called after each combination of charts and placements is solved (empty: never), one call
   /// at a time and in the order of the combinations, from the thread that called
   /// `solve_scene()` or, with `solver.threads` other than 1, from any thread of the solve; the
@@ -246,6 +259,9 @@ struct Scene_solve_statistics
   /// chart combinations never built: propagating the equations along the tree of hinges
   /// excluded every box of theirs (`Scene_solve_parameters::chart_propagation`)
   std::size_t excluded_by_propagation = 0;
+  /// the scene was solved along its tree by a sweep (`Scene_solve_parameters::sweep`), not per
+  /// chart combination; `boxes` and `krawczyk_tests` are then the sweep's
+  bool swept = false;
   std::size_t curve_boxes = 0;             ///< boxes visited by the curve tracer, all systems
   double reduce_seconds = 0;               ///< building the reduced systems
   double solve_seconds = 0;                ///< the subdivision solver
@@ -977,22 +993,40 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
     else if (!list.empty() && std::all_of(list.begin(), list.end(), [](const auto& e) { return e.singular; })) always_double[b] = &list[0];
   }
   std::vector<int> placements(c.number_of_bodies(), 0);
-  Reduced_system<Traits, NT> first(c, tree, selection);
+  // A scene the sweep may solve (Scene_solve_parameters::sweep, below): its Tree_system, built
+  // first, says what the reduced system would (variables, equations, charts) without
+  // expanding it (a chain of 14 hinges: 1.6 million terms, 56 s)
+  std::optional<Tree_system<Traits>> sweep_system;
+  if (parameters.sweep && !retry && Tree_system<Traits>::unsupported(c, tree).empty()) {
+    try { sweep_system.emplace(c, tree, selection); } catch (const Input_error&) {}  // (then as any scene)
+    if (sweep_system) {
+      const Sweep_order o = sweep_system->is_square() ? sweep_order(*sweep_system) : Sweep_order();
+      if (!o.exists(sweep_system->number_of_variables()) || o.driver == Sweep_order::none) sweep_system.reset();
+    }
+  }
+  std::optional<Reduced_system<Traits, NT>> first;
+  if (!sweep_system) first.emplace(c, tree, selection);
   st.reduce_seconds += since(t0);
-  out.variables = first.parametrization().variable_names();
-  out.equations = first.number_of_equations();
+  std::vector<int> radix_c;
+  if (first) {
+    out.variables = first->parametrization().variable_names();
+    out.equations = first->number_of_equations();
+    for (const auto& e : first->parametrization().edges()) radix_c.push_back(e.number_of_charts);
+  } else {
+    out.variables = sweep_system->parametrization(0).variable_names();
+    out.equations = sweep_system->number_of_equations();
+    for (const auto& e : sweep_system->parametrization(0).edges()) radix_c.push_back(e.number_of_charts);
+  }
   // one equation fewer than parameters and no loose body: the configurations form curves
-  const bool one_dof = !first.is_square() && first.number_of_equations() + 1 == first.number_of_variables() &&
-                       first.loose_bodies().empty() && !parameters.solver.fast;
-  if (!first.is_square() && !one_dof) {
-    const std::string d = first.diagnostic();
-    out.diagnosis = (first.number_of_equations() < first.number_of_variables() || !first.loose_bodies().empty()
+  const bool one_dof = first && !first->is_square() && first->number_of_equations() + 1 == first->number_of_variables() &&
+                       first->loose_bodies().empty() && !parameters.solver.fast;
+  if (first && !first->is_square() && !one_dof) {
+    const std::string d = first->diagnostic();
+    out.diagnosis = (first->number_of_equations() < first->number_of_variables() || !first->loose_bodies().empty()
                          ? "under_constrained: "
                          : "over_constrained: ") + d;
     return out;
   }
-  std::vector<int> radix_c;
-  for (const auto& e : first.parametrization().edges()) radix_c.push_back(e.number_of_charts);
   std::vector<std::array<std::size_t, 4>> orientation;
   for (std::size_t q = 0; q < parameters.inequalities.size(); ++q) {
     std::array<std::size_t, 4> pts;
@@ -1130,6 +1164,25 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
   };
   // what the solve, or the tracer, of one chart combination found: configurations, curves,
   // regions
+  // a verified configuration into `found`: one root seen from two charts is kept once; never
+  // two roots of one system, nor two placements of a body (distinct shapes, however close: a
+  // near-degenerate body's mirror pair); but two regions of one system around one possible
+  // multiple root (a cluster the solver left in two pieces) are one configuration, still not
+  // certified
+  auto add_found = [&](Scene_configuration& s) {
+    const double size = internal::configuration_size(s.configuration);
+    for (auto& f : found) {
+      if (f.s.placements != s.placements) continue;
+      if (f.s.charts == s.charts && (f.s.certified || s.certified)) continue;
+      if (internal::configuration_distance(f.s.configuration, s.configuration) <= parameters.merge_tolerance * (std::max)(size, f.size)) {
+        ++f.s.found;
+        ++st.duplicates;
+        if (!f.s.certified && s.certified) { std::size_t k = f.s.found; f.s = s; f.s.found = k; }
+        return;
+      }
+    }
+    found.push_back({s, size});
+  };
   auto process = [&](const std::vector<int>& charts, const Reduced_system<Traits, NT>& r, const Polynomial_system<NT>& sys,
                      Solver_result<IT>& res) {
     if (positive.empty() && !res.diagnosis.empty()) {
@@ -1353,27 +1406,7 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
                                                 std::to_string(s.max_residual) + ")", s.parameters, 1, s.configuration));
         continue;
       }
-      for (Scene_configuration& v : variants_found) {
-      Scene_configuration& s = v;
-      const double size = internal::configuration_size(s.configuration);
-      bool merged = false;
-      for (auto& f : found) {
-        // one root seen from two charts; never two roots of one system, nor two placements
-        // of a body (distinct shapes, however close: a near-degenerate body's mirror pair);
-        // but two regions of one system around one possible multiple root (a cluster the
-        // solver left in two pieces) are one configuration, still not certified
-        if (f.s.placements != s.placements) continue;
-        if (f.s.charts == s.charts && (f.s.certified || s.certified)) continue;
-        if (internal::configuration_distance(f.s.configuration, s.configuration) <= parameters.merge_tolerance * (std::max)(size, f.size)) {
-          ++f.s.found;
-          ++st.duplicates;
-          if (!f.s.certified && s.certified) { std::size_t k = f.s.found; f.s = s; f.s.found = k; }
-          merged = true;
-          break;
-        }
-      }
-      if (!merged) found.push_back({s, size});
-      }
+      for (Scene_configuration& v : variants_found) add_found(v);
     }
     add_regions(regions_left);
   };
@@ -1468,8 +1501,91 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
   // combinations it excludes are never built. Computed once (one placement combination: the
   // covering bodies all have coordinates); a propagation the budget or a stop cuts short
   // excludes nothing.
+  // A chain of hinges braced by near distances (a sweep order with a driver): solved along the
+  // tree by one sweep, never expanded, instead of chart combination by chart combination
+  bool swept = false;
+  if (sweep_system && !one_dof && per_placement >= (std::max<std::size_t>)(parameters.sweep_from, 2) && total == per_placement &&
+      nc_bodies.empty() && placements_fit(placements)) {
+    auto t1 = Clock::now();
+    const Tree_system<Traits>* ts = &*sweep_system;
+    {
+      swept = true;
+      st.swept = true;
+      Tree_solver_parameters tp;
+      tp.interrupt = parameters.interrupt;
+      if (parameters.maximal_seconds > 0) tp.maximal_seconds = (std::max)(1e-3, parameters.maximal_seconds - since(started));
+      const std::size_t boxes_before = st.boxes;
+      tp.progress = [&](std::size_t boxes, std::size_t) { st.boxes = boxes_before + boxes; report(); };
+      const Tree_solve_result tr = solve_tree_system(*ts, tp);
+      st.boxes = boxes_before;
+      st.solve_seconds += since(t1);
+      st.boxes += tr.statistics.boxes;
+      st.krawczyk_tests += tr.statistics.krawczyk_tests;
+      auto t3 = Clock::now();
+      typedef Incidence_tree_parametrization<Traits, CGAL::Interval_nt<false>> Tree_parametrization;
+      for (const Tree_root& root : tr.roots) {
+        ++st.roots;
+        const Tree_parametrization p(c, tree, root.charts);
+        Scene_configuration x;
+        x.certified = root.certified;
+        x.coefficient_precision = 53;  // (the tree's maps in double intervals)
+        x.charts = root.charts;
+        x.placements = placements;
+        x.variables = ts->variable_names(root.charts);
+        for (const auto& e : root.enclosure) {
+          x.parameters.push_back({e.inf(), e.sup()});
+          x.on_chart_border = x.on_chart_border || e.inf() <= -1 || e.sup() >= 1;
+        }
+        x.configuration = configuration(c, tree, p, root.approximation, placements);
+        x.residuals = residuals(original, x.configuration);
+        x.max_residual = x.residuals.max();
+        const double size = internal::configuration_size(x.configuration);
+        x.max_relative_residual = internal::relative_residual(x.residuals, size);
+        if (internal::verified(x.residuals, parameters.residual_threshold, size)) {
+          add_found(x);
+        } else if (internal::mirror_image(x.residuals, parameters.residual_threshold, size)) {
+          ++st.spurious;
+        } else {
+          Scene_unresolved u;
+          u.reason = "root of the tree's system not verified in the original system (residual " + std::to_string(x.max_residual) + ")";
+          u.charts = x.charts;
+          u.placements = placements;
+          u.box = x.parameters;
+          u.at_centre = x.configuration;
+          out.unresolved.push_back(std::move(u));
+        }
+      }
+      for (const Tree_region& r : tr.unresolved) {
+        Scene_unresolved u;
+        u.kind = r.kind;
+        u.reason = r.reason + " (solved along the tree: chart -1 is a hinge whose chart was not chosen yet, its whole circle)";
+        u.charts = r.charts;
+        u.placements = placements;
+        u.box = r.box;
+        u.boxes = r.boxes;
+        if (std::find(r.charts.begin(), r.charts.end(), Tree_system<Traits>::WHOLE) == r.charts.end()) {
+          std::vector<double> centre;
+          for (const auto& b : r.box) centre.push_back(0.5 * b.first + 0.5 * b.second);
+          u.at_centre = configuration(c, tree, Tree_parametrization(c, tree, r.charts), centre, placements);
+        }
+        out.unresolved.push_back(std::move(u));
+      }
+      st.verify_seconds += since(t3);
+      if (!tr.stopped.empty()) {
+        std::ostringstream why;
+        why << (tr.stopped == "interrupted" ? std::string("interrupted")
+                : tr.stopped == "time limit" ? "time limit of " + seconds_text(seconds_before + parameters.maximal_seconds) + " s reached"
+                                             : tr.stopped + " (" + std::to_string(tp.maximal_boxes) + " boxes)")
+            << " after " << seconds_text(seconds_before + since(started)) << " s, solving along the tree: " << tr.statistics.boxes
+            << " boxes, the configurations certified so far are listed, the rest of the hinges' circles is pending";
+        out.limits.push_back(why.str());
+      }
+      done = total;
+      report();
+    }
+  }
   std::optional<std::set<std::vector<int>>> propagated;
-  if (!retry && !one_dof && parameters.chart_propagation && per_placement > 1 && total == per_placement &&
+  if (!swept && !retry && !one_dof && parameters.chart_propagation && per_placement > 1 && total == per_placement &&
       Tree_system<Traits>::unsupported(c, tree).empty()) {
     auto t1 = Clock::now();
     std::optional<Tree_system<Traits>> ts;
@@ -1488,7 +1604,9 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
   // One chart combination per placement combination (no tree edge with charts: a merged
   // rigid part's placements, a tree or strip of bodies known by distances): the placement
   // combinations themselves are built and solved in parallel, and taken in their order.
-  if (per_placement == 1) {
+  if (swept) {
+    // (solved above)
+  } else if (per_placement == 1) {
     std::vector<int> next_placements = placements;
     bool more_placements = true;
     auto next = [&](Combination_work& w) {
@@ -1704,7 +1822,7 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
   } while (!stopped && internal::next_combination(placements, radix_p));
   // a stop the solver met inside the last combination (its rest left pending for it) is a
   // stop of the whole solve too
-  if (!stopped)
+  if (!stopped && !swept)
     if (const char* why = stop_reason())
       for (const auto& u : out.unresolved)
         if (u.kind == Box_class::PENDING && (u.reason.find("interrupted") != std::string::npos || u.reason.find("time budget") != std::string::npos)) {

@@ -10,6 +10,7 @@
 #include <CGAL/Rigid_incidence/Solver_result.h>
 #include <CGAL/Rigid_incidence/Tree_system.h>
 #include <Eigen/Dense>
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <functional>
@@ -45,7 +46,76 @@ struct Tree_solver_parameters
   const std::atomic<bool>* interrupt = nullptr;
   /// called every 4096 boxes with the boxes visited and the roots found so far (empty: never)
   std::function<void(std::size_t, std::size_t)> progress;
+  /// when the system has a sweep order (`sweep_order()`): branch on its driver only and find
+  /// the other variables in order, each from its equation (not with `charts_only`)
+  bool sweep = true;
 };
+
+/// \ingroup PkgRigidIncidenceSolver
+/// An order in which the equations of a `Tree_system` find its variables one at a time: with
+/// the driver's value known, `steps[i].first` (an equation) involves no variable but the driver
+/// and those of the steps before it, and `steps[i].second`; the equations `checks` are left
+/// over. A chain of hinged bodies braced by distances between near neighbours has one: the
+/// first hinge drives, each brace finds the next hinge, the closing distance is the check.
+struct Sweep_order
+{
+  static constexpr std::size_t none = std::size_t(-1);
+  std::size_t driver = none;                                  ///< the variable branched on (`none`: no driver)
+  std::vector<std::pair<std::size_t, std::size_t>> steps;     ///< (equation, the variable it finds)
+  std::vector<std::size_t> checks;                            ///< the other equations
+  /// every variable is the driver or found by a step
+  bool exists(std::size_t variables) const { return steps.size() + (driver == none ? 0 : 1) == variables && variables > 0; }
+};
+
+/// \ingroup PkgRigidIncidenceSolver
+/// A sweep order of the system of equations whose variables are `vars` (one sorted list per
+/// equation) over `n` variables: no driver if one exists without, else the driver whose steps
+/// use the shortest equations (the sum of their sizes; ties: the lowest driver). Greedy: at each
+/// step the first equation with exactly one variable not yet found. Empty (`exists()` false)
+/// when there is none with at most one driver.
+inline Sweep_order sweep_order(std::size_t n, const std::vector<std::vector<std::size_t>>& vars)
+{
+  Sweep_order best;
+  std::size_t best_cost = std::size_t(-1);
+  for (std::size_t d = Sweep_order::none;; ++d) {  // none, then 0 .. n-1
+    if (d != Sweep_order::none && d >= n) break;
+    Sweep_order o;
+    o.driver = d;
+    std::vector<char> found(n, 0), used(vars.size(), 0);
+    if (d != Sweep_order::none) found[d] = 1;
+    std::size_t cost = 0;
+    for (bool grew = true; grew;) {
+      grew = false;
+      for (std::size_t e = 0; e < vars.size(); ++e) {
+        if (used[e]) continue;
+        std::size_t open = 0, which = 0;
+        for (std::size_t v : vars[e]) if (!found[v]) { ++open; which = v; }
+        if (open != 1) continue;
+        used[e] = 1;
+        found[which] = 1;
+        o.steps.push_back({e, which});
+        cost += vars[e].size();
+        grew = true;
+        break;
+      }
+    }
+    for (std::size_t e = 0; e < vars.size(); ++e) if (!used[e]) o.checks.push_back(e);
+    if (o.exists(n) && cost < best_cost) { best = o; best_cost = cost; }
+    if (d == Sweep_order::none && best.exists(n)) break;
+  }
+  if (!best.exists(n)) return Sweep_order();
+  return best;
+}
+
+/// \ingroup PkgRigidIncidenceSolver
+/// The sweep order of a `Tree_system` (see `sweep_order(std::size_t, ...)`).
+template <class Traits>
+Sweep_order sweep_order(const Tree_system<Traits>& S)
+{
+  std::vector<std::vector<std::size_t>> vars;
+  for (const auto& e : S.equations()) vars.push_back(e.variables);
+  return sweep_order(S.number_of_variables(), vars);
+}
 
 /// \ingroup PkgRigidIncidenceSolver
 /// A root of a `Tree_system`: per variable its chart and an enclosure in that chart.
@@ -124,9 +194,18 @@ first, so the answer does not depend on anything but the system):
 A chart is thus chosen only where a box must be split on that hinge, and the combinations of
 charts the equations exclude on a coarse box are never enumerated. `solve_scene()` uses it with
 `Tree_solver_parameters::charts_only` to leave out the chart combinations it excludes before
-they are built (`Scene_solve_parameters::chart_propagation`). As a solver of whole scenes it is
-not yet competitive: its first-order enclosures prune coarse boxes far less than the Bernstein
-hull of the expanded system, and a chain's boxes grow about 4 times per body (see the user
+they are built (`Scene_solve_parameters::chart_propagation`).
+
+<b>The sweep</b> (`Tree_solver_parameters::sweep`, when `sweep_order()` finds an order; not with
+`charts_only`): the driver is the only variable bisected (both charts as two boxes); in each
+box every step's variable is projected from its equation over the variables before it (its
+first-order contraction, then slices of its interval, or of both charts' circles while its
+chart is open, where the equation can vanish), separate pieces becoming separate boxes (the
+real branches of the steps' curve over the driver); then steps 2 and 3 above on the whole box,
+and the driver is bisected, or, at a fold where a found variable stays a million times wider
+than the driver, that variable. `solve_scene()` solves a chain of hinges braced by near
+distances this way (`Scene_solve_parameters::sweep`): the chain of 12 tetrahedra in 5,358 boxes
+(3.6 s), where the branch and prune above needs about 4 times more boxes per body (see the user
 manual, \ref RI_tree_propagation).
 
 Roots are certified (the Krawczyk test is a proof in outward-rounded double intervals); a root
@@ -151,7 +230,7 @@ Tree_solve_result solve_tree_system(const Tree_system<Traits>& S, const Tree_sol
   // a box; `groups`: where slicing left a variable in separate pieces (or in both charts), the
   // pieces, which the split takes as the children
   struct Piece { int ch; IT x; };
-  struct Box { std::vector<int> ch; std::vector<IT> x; std::size_t group_variable = std::size_t(-1); std::vector<Piece> groups; };
+  struct Box { std::vector<int> ch; std::vector<IT> x; std::size_t group_variable = std::size_t(-1); std::vector<Piece> groups; std::size_t level = 0; };
   std::vector<Box> stack;
   stack.push_back({std::vector<int>(n, WHOLE), std::vector<IT>(n, IT(-1, 1))});
   std::vector<Box> unknown;
@@ -205,7 +284,7 @@ Tree_solve_result solve_tree_system(const Tree_system<Traits>& S, const Tree_sol
     return true;
   };
   // steps 1 and 2; false: excluded
-  auto contract = [&](Box& b) {
+  auto contract = [&](Box& b, int slicing_rounds) {
     b.groups.clear();
     b.group_variable = std::size_t(-1);
     for (int round = 0; round < P.contraction_rounds; ++round) {
@@ -253,7 +332,7 @@ Tree_solve_result solve_tree_system(const Tree_system<Traits>& S, const Tree_sol
           xi = nx;
         }
         // short equations: each variable's slices (what projecting a Bernstein form gives)
-        if (vars.size() <= 3 && round < P.slicing_rounds)
+        if (vars.size() <= 3 && round < slicing_rounds)
           for (std::size_t v2 : vars) {
             if (B::width(b.x[v2]) <= P.split_width / 8) continue;
             std::vector<Piece> kept;
@@ -406,14 +485,167 @@ Tree_solve_result solve_tree_system(const Tree_system<Traits>& S, const Tree_sol
     out.roots.push_back(std::move(r));
   };
 
-  while (!stack.empty()) {
+  // the Krawczyk test on box b (every chart chosen): true when nothing is left of b (a root
+  // recorded, or b excluded); else b is cut to its meet with the operator and `widest` is its
+  // widest variable
+  auto certify = [&](Box& b, Outcome& o, double& widest) {
+    std::vector<IT> k, xx;
+    o = krawczyk(b.ch, b.x, 0.05, k, xx);
+    if (o == ROOT) { ++st.certified_boxes; record_root(b.ch, k, xx); return true; }
+    if (o == EXCLUDED) { ++st.excluded; return true; }
+    if (o == UNDECIDED) {
+      double nw = 0;
+      for (std::size_t i = 0; i < n; ++i) {
+        if (B::empty_meet(b.x[i], k[i])) { ++st.excluded; return true; }
+        b.x[i] = B::meet(b.x[i], k[i]);
+        nw = (std::max)(nw, B::width(b.x[i]));
+      }
+      widest = nw;
+    }
+    return false;
+  };
+  const Sweep_order order = P.sweep && !P.charts_only ? sweep_order(S) : Sweep_order();
+  if (order.exists(n)) {
+    stack.clear();
+    if (order.driver != Sweep_order::none) {
+      Box b1{std::vector<int>(n, WHOLE), std::vector<IT>(n, IT(-1, 1))};
+      b1.ch[order.driver] = 1;
+      stack.push_back(b1);
+      b1.ch[order.driver] = 0;
+      stack.push_back(b1);
+    } else {
+      stack.push_back({std::vector<int>(n, WHOLE), std::vector<IT>(n, IT(-1, 1))});
+    }
+  }
+  // the solutions in variable v (chart ch, interval X) of equation e over the rest of box b:
+  // first-order contraction of v, then, where the equation is not monotone in v, slices of
+  // X in which it can vanish, each refined the same way `depth` more times; touching pieces
+  // merged (appended to `out`)
+  std::function<void(Box&, std::size_t, std::size_t, int, IT, int, std::vector<Piece>&)> refine =
+      [&](Box& b, std::size_t e, std::size_t v, int ch, IT X, int depth, std::vector<Piece>& out_pieces) {
+    const auto& vars = S.equations()[e].variables;
+    const std::size_t iv = std::size_t(std::find(vars.begin(), vars.end(), v) - vars.begin());
+    b.ch[v] = ch;
+    // tight: the equation is monotone in v over X, with a slope known to a factor 3 (its
+    // first-order form then finds v as narrow as the other variables allow)
+    bool tight = false;
+    for (int it = 0; it < 8; ++it) {
+      b.x[v] = X;
+      const IT c = S.evaluate(e, b.ch, b.x, A, &ws);
+      if (!B::contains_zero(TS::range(c, A))) return;
+      if (B::contains_zero(A[iv])) { tight = false; break; }
+      tight = CGAL::abs(A[iv]).sup() <= 3 * CGAL::abs(A[iv]).inf();
+      IT rest = c;
+      for (std::size_t l = 0; l < vars.size(); ++l)
+        if (l != iv) rest += CGAL::abs(A[l]).sup() * IT(-1, 1);
+      const IT q = (-rest) / A[iv];
+      if (B::empty_meet(IT(-1, 1), q)) return;
+      const IT cand = from_eps(X, B::meet(IT(-1, 1), q));
+      if (B::empty_meet(X, cand)) return;
+      const IT nx = B::meet(X, cand);
+      const bool shrunk = B::width(nx) < 0.9 * B::width(X);
+      X = nx;
+      if (!shrunk) break;
+    }
+    b.x[v] = X;
+    // (a first-order form over a wide interval prunes little even where the equation is
+    // monotone: wide pieces are sliced again)
+    if (depth == 0 || tight || B::width(X) <= P.minimal_width) {
+      if (!out_pieces.empty() && out_pieces.back().ch == ch && out_pieces.back().x.sup() >= X.inf())
+        out_pieces.back().x = IT(out_pieces.back().x.inf(), (std::max)(out_pieces.back().x.sup(), X.sup()));
+      else
+        out_pieces.push_back({ch, X});
+      return;
+    }
+    const int K = 8;
+    const double lo = X.inf(), hi = X.sup();
+    for (int k = 0; k < K; ++k) {
+      const double a = k == 0 ? lo : lo + (hi - lo) * k / K, z = k == K - 1 ? hi : lo + (hi - lo) * (k + 1) / K;
+      refine(b, e, v, ch, IT(a, z), depth - 1, out_pieces);
+    }
+  };
+  std::vector<Piece> pieces;
+  while (order.exists(n) && !stack.empty()) {
     out.stopped = stop_reason();
     if (!out.stopped.empty()) break;
     Box b = std::move(stack.back());
     stack.pop_back();
     ++st.boxes;
     if (P.progress && st.boxes % 4096 == 0) P.progress(st.boxes, out.roots.size());
-    if (!contract(b)) { ++st.excluded; continue; }
+    // each step's variable from its equation, in order; separate pieces are separate boxes
+    bool excluded = false;
+    for (std::size_t i = b.level; i < order.steps.size() && !excluded; ++i) {
+      const std::size_t e = order.steps[i].first, v = order.steps[i].second;
+      pieces.clear();
+      const IT X0 = b.x[v];
+      const int ch0 = b.ch[v];
+      for (int ch = 0; ch < 2; ++ch) {
+        if (ch0 != WHOLE && ch != ch0) continue;
+        refine(b, e, v, ch, ch0 == WHOLE ? IT(-1, 1) : X0, ch0 == WHOLE ? 3 : 2, pieces);
+      }
+      if (pieces.empty()) { excluded = true; break; }
+      // pieces that cover most of their hull are slices of one wide set (the driver still
+      // wide), not separate branches: one box for their hull (else the boxes multiply with the
+      // steps)
+      bool one_chart = true;
+      double covered = 0;
+      for (const Piece& pc : pieces) { one_chart = one_chart && pc.ch == pieces[0].ch; covered += B::width(pc.x); }
+      const double hull_width = one_chart ? pieces.back().x.sup() - pieces.front().x.inf() : 4;
+      if (pieces.size() > 1 && order.driver != Sweep_order::none && covered > 0.25 * hull_width) {
+        pieces[0] = one_chart ? Piece{pieces[0].ch, IT(pieces[0].x.inf(), pieces.back().x.sup())} : Piece{WHOLE, IT(-1, 1)};
+        pieces.resize(1);
+      }
+      for (std::size_t k = pieces.size(); k-- > 1;) {
+        Box child = b;
+        child.ch[v] = pieces[k].ch;
+        child.x[v] = pieces[k].x;
+        child.level = i + 1;
+        stack.push_back(std::move(child));
+      }
+      if (pieces.size() > 1) ++st.splits;
+      b.ch[v] = pieces[0].ch;
+      b.x[v] = pieces[0].x;
+    }
+    if (excluded || !contract(b, 0)) { ++st.excluded; continue; }
+    b.level = 0;
+    double widest = 0;
+    for (std::size_t i = 0; i < n; ++i) widest = (std::max)(widest, B::width(b.x[i]));
+    Outcome o = UNDECIDED;
+    if (widest <= P.split_width && certify(b, o, widest)) continue;
+    // the driver; but at a fold of a found variable over the driver (where halving the driver
+    // hardly narrows it), once the driver is a million times narrower, that variable, as a
+    // curve tracer changes its parameter at a turning point
+    std::size_t v = n, widest_other = n;
+    double others = 0;
+    for (std::size_t i = 0; i < n; ++i)
+      if (i != order.driver && B::width(b.x[i]) > others) { others = B::width(b.x[i]); widest_other = i; }
+    if (order.driver != Sweep_order::none && B::width(b.x[order.driver]) > P.minimal_width &&
+        !(others > 1e6 * B::width(b.x[order.driver]))) {
+      v = order.driver;
+    } else if (others > P.minimal_width) {
+      v = widest_other;
+    }
+    if (v == n) {
+      unknown.push_back(b);
+      unknown_reason.push_back(o == SINGULAR ? "possible multiple root (singular Jacobian)" : "not certified at minimal width");
+      continue;
+    }
+    ++st.splits;
+    const double c = B::mid(b.x[v]);
+    Box lo = b, hi = b;
+    lo.x[v] = IT(b.x[v].inf(), c);
+    hi.x[v] = IT(c, b.x[v].sup());
+    stack.push_back(std::move(hi));
+    stack.push_back(std::move(lo));
+  }
+  while (!order.exists(n) && !stack.empty()) {
+    out.stopped = stop_reason();
+    if (!out.stopped.empty()) break;
+    Box b = std::move(stack.back());
+    stack.pop_back();
+    ++st.boxes;
+    if (P.progress && st.boxes % 4096 == 0) P.progress(st.boxes, out.roots.size());
+    if (!contract(b, P.slicing_rounds)) { ++st.excluded; continue; }
     bool any_whole = false;
     double widest = 0;
     for (std::size_t i = 0; i < n; ++i) {
@@ -422,20 +654,8 @@ Tree_solve_result solve_tree_system(const Tree_system<Traits>& S, const Tree_sol
     }
     if (P.charts_only && !any_whole) { out.chart_combinations.insert(b.ch); continue; }
     if (!any_whole && widest <= P.split_width) {
-      std::vector<IT> k, xx;
-      const Outcome o = krawczyk(b.ch, b.x, 0.05, k, xx);
-      if (o == ROOT) { ++st.certified_boxes; record_root(b.ch, k, xx); continue; }
-      if (o == EXCLUDED) { ++st.excluded; continue; }
-      if (o == UNDECIDED) {
-        double nw = 0;
-        for (std::size_t i = 0; i < n; ++i) {
-          if (B::empty_meet(b.x[i], k[i])) { nw = -1; break; }
-          b.x[i] = B::meet(b.x[i], k[i]);
-          nw = (std::max)(nw, B::width(b.x[i]));
-        }
-        if (nw < 0) { ++st.excluded; continue; }
-        widest = nw;
-      }
+      Outcome o = UNDECIDED;
+      if (certify(b, o, widest)) continue;
       if (widest <= P.minimal_width) {
         unknown.push_back(b);
         unknown_reason.push_back(o == SINGULAR ? "possible multiple root (singular Jacobian)" : "not certified at minimal width");
