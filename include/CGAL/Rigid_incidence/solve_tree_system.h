@@ -59,7 +59,7 @@ struct Tree_solver_parameters
 /// first hinge drives, each brace finds the next hinge, the closing distance is the check.
 struct Sweep_order
 {
-  static constexpr std::size_t none = std::size_t(-1);
+  static constexpr std::size_t none = std::size_t(-1);       ///< no variable (no driver)
   std::size_t driver = none;                                  ///< the variable branched on (`none`: no driver)
   std::vector<std::pair<std::size_t, std::size_t>> steps;     ///< (equation, the variable it finds)
   std::vector<std::size_t> checks;                            ///< the other equations

@@ -373,18 +373,19 @@ if(TARGET rigid_incidence)
            COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=analyze|${_ri_platforms}|--no-plan" -DEXPECT_RC=1
                    "-DEXPECT_STDERR=--no-plan is an option of solve and solve-system" -P ${_ri_cli_script})
   # a time limit for the whole solve, and the interrupt (issue 28, item 5): a scene whose solve
-  # runs for 70 s (a chain of 10 tetrahedra) stops, and its partial answer is valid JSON whose solutions hold
+  # chart combination by chart combination (--no-sweep: the sweep solves it in a second) runs
+  # for 70 s (a chain of 10 tetrahedra) stops, and its partial answer is valid JSON whose solutions hold
   # in the scene and which says it is not complete (exit status 0 at the time limit, 130 or
   # 143 after SIGINT or SIGTERM, sent by coreutils' timeout)
   set(_ri_long ${CMAKE_CURRENT_LIST_DIR}/../data/tetrahedron_chain10.json)
   add_test(NAME cli_solve_max_seconds
-           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${_ri_long}|--json|--max-seconds|2" -DEXPECT_RC=0
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${_ri_long}|--no-sweep|--json|--max-seconds|2" -DEXPECT_RC=0
                    "-DEXPECT_STDOUT=time limit of 2 s reached"
                    "-DSTDOUT_FILE=${CMAKE_CURRENT_BINARY_DIR}/cli_solve_max_seconds.json"
                    "-DCHECK_PROGRAM=$<TARGET_FILE:solve_json_check>" "-DCHECK_ARGS=STDOUT_FILE|${_ri_long}|--complete|false"
                    -P ${_ri_cli_script})
   add_test(NAME cli_solve_max_seconds_text
-           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${_ri_long}|--max-seconds|1|--quiet" -DEXPECT_RC=0
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${_ri_long}|--no-sweep|--max-seconds|1|--quiet" -DEXPECT_RC=0
                    "-DEXPECT_STDOUT=limit reached: time limit of 1 s reached&&NOT complete" -P ${_ri_cli_script})
   find_program(RIGID_INCIDENCE_TIMEOUT timeout)
   if(RIGID_INCIDENCE_TIMEOUT)
@@ -396,7 +397,7 @@ if(TARGET rigid_incidence)
       endif()
       add_test(NAME cli_solve_sig${_sig}
                COMMAND ${CMAKE_COMMAND} "-DTOOL=${RIGID_INCIDENCE_TIMEOUT}"
-                       "-DARGS=--preserve-status|-s|${_sig}|3|${_ri_tool}|solve|${_ri_long}|--json" -DEXPECT_RC=${_rc}
+                       "-DARGS=--preserve-status|-s|${_sig}|3|${_ri_tool}|solve|${_ri_long}|--no-sweep|--json" -DEXPECT_RC=${_rc}
                        "-DEXPECT_STDOUT=\"interrupted after"
                        "-DSTDOUT_FILE=${CMAKE_CURRENT_BINARY_DIR}/cli_solve_sig${_sig}.json"
                        "-DCHECK_PROGRAM=$<TARGET_FILE:solve_json_check>" "-DCHECK_ARGS=STDOUT_FILE|${_ri_long}|--complete|false"
@@ -417,7 +418,7 @@ if(TARGET rigid_incidence)
   if(RIGID_INCIDENCE_SH)
     add_test(NAME cli_solve_sigTERM_twice
              COMMAND ${CMAKE_COMMAND} "-DTOOL=${RIGID_INCIDENCE_SH}"
-                     "-DARGS=${CMAKE_CURRENT_LIST_DIR}/../cli/signal_twice.sh|TERM|2|${_ri_tool}|solve|${_ri_long}|--json"
+                     "-DARGS=${CMAKE_CURRENT_LIST_DIR}/../cli/signal_twice.sh|TERM|2|${_ri_tool}|solve|${_ri_long}|--no-sweep|--json"
                      -DEXPECT_RC=143 "-DEXPECT_STDOUT=\"interrupted after"
                      "-DSTDOUT_FILE=${CMAKE_CURRENT_BINARY_DIR}/cli_solve_sigTERM_twice.json"
                      "-DCHECK_PROGRAM=$<TARGET_FILE:solve_json_check>" "-DCHECK_ARGS=STDOUT_FILE|${_ri_long}|--complete|false"
