@@ -504,6 +504,16 @@ Tree_solve_result solve_tree_system(const Tree_system<Traits>& S, const Tree_sol
     }
     return false;
   };
+  // box b halved on variable v, the lower half visited first
+  auto bisect = [&](const Box& b, std::size_t v) {
+    ++st.splits;
+    const double c = B::mid(b.x[v]);
+    Box lo = b, hi = b;
+    lo.x[v] = IT(b.x[v].inf(), c);
+    hi.x[v] = IT(c, b.x[v].sup());
+    stack.push_back(std::move(hi));
+    stack.push_back(std::move(lo));
+  };
   const Sweep_order order = P.sweep && !P.charts_only ? sweep_order(S) : Sweep_order();
   if (order.exists(n)) {
     stack.clear();
@@ -630,13 +640,7 @@ Tree_solve_result solve_tree_system(const Tree_system<Traits>& S, const Tree_sol
       unknown_reason.push_back(o == SINGULAR ? "possible multiple root (singular Jacobian)" : "not certified at minimal width");
       continue;
     }
-    ++st.splits;
-    const double c = B::mid(b.x[v]);
-    Box lo = b, hi = b;
-    lo.x[v] = IT(b.x[v].inf(), c);
-    hi.x[v] = IT(c, b.x[v].sup());
-    stack.push_back(std::move(hi));
-    stack.push_back(std::move(lo));
+    bisect(b, v);
   }
   while (!order.exists(n) && !stack.empty()) {
     out.stopped = stop_reason();
@@ -734,13 +738,7 @@ Tree_solve_result solve_tree_system(const Tree_system<Traits>& S, const Tree_sol
         continue;
       }
     }
-    ++st.splits;
-    const double c = B::mid(b.x[v]);
-    Box lo = b, hi = b;
-    lo.x[v] = IT(b.x[v].inf(), c);
-    hi.x[v] = IT(c, b.x[v].sup());
-    stack.push_back(std::move(hi));
-    stack.push_back(std::move(lo));
+    bisect(b, v);
   }
   // unknown boxes: touching ones of one chart combination merged
   {
