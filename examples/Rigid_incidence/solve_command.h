@@ -693,8 +693,8 @@ int solve(const RI::Scene& scene, const RI::Rigid_body_collection<Traits>& input
     }
   }
   std::cout << "\nstatistics: " << st.boxes << " boxes, " << st.krawczyk_tests << " Krawczyk tests, " << st.roots << " roots ("
-            << st.duplicates << " found twice, " << st.spurious << " rejected by the original system), " << st.excluded_at_once << " of "
-            << st.chart_combinations << " chart combinations excluded at once"
+            << st.duplicates << " found twice, " << st.spurious << " rejected by the original system)"
+            << (st.swept ? std::string() : ", " + std::to_string(st.excluded_at_once) + " of " + std::to_string(st.chart_combinations) + " chart combinations excluded at once")
             << (st.placements_excluded ? ", " + std::to_string(st.placements_excluded) + " combinations of placements excluded (shared points at distances that differ)" : std::string())
             << (st.excluded_by_propagation ? ", " + std::to_string(st.excluded_by_propagation) + " chart combinations never built (excluded by propagation along the tree)" : std::string())
             << (st.swept ? std::string(", solved along the tree by a sweep (no chart combination built)") : std::string())

@@ -319,6 +319,57 @@ int main()
     for (const auto& u : r.unresolved) pending = pending && u.kind == RI::Box_class::PENDING;
     CHECK(pending, "a budget of 50 boxes: the rest is not pending");
   }
+  // the sweep's slices: the same answer with 1 and 2 threads (root for root, in order) and
+  // the same roots as one uncut sweep; a cut sweep's pending boxes merged into regions
+  {
+    Loaded l = load(dir + "/chain6.json");
+    RI::Tree_system<Traits> S(l.c, l.t, l.wf);
+    RI::Tree_solver_parameters P1, P2, P0;
+    P2.threads = 2;
+    P0.sweep_slices = 1;
+    const RI::Tree_solve_result r1 = RI::solve_tree_system(S, P1), r2 = RI::solve_tree_system(S, P2), r0 = RI::solve_tree_system(S, P0);
+    CHECK(r1.complete() && r2.complete() && r0.complete(), "chain6 slices: not complete");
+    bool same = r1.roots.size() == r2.roots.size() && r1.statistics.boxes == r2.statistics.boxes;
+    for (std::size_t i = 0; same && i < r1.roots.size(); ++i)
+      same = r1.roots[i].charts == r2.roots[i].charts && r1.roots[i].approximation == r2.roots[i].approximation;
+    CHECK(same, "chain6 slices: 1 and 2 threads differ (" << r1.roots.size() << " and " << r2.roots.size() << " roots, " << r1.statistics.boxes
+                                                          << " and " << r2.statistics.boxes << " boxes)");
+    // a root on a slice border is kept once: each root of the uncut sweep once among the slices'
+    CHECK(r0.roots.size() == r1.roots.size(), "chain6 slices: " << r1.roots.size() << " roots, uncut " << r0.roots.size());
+    for (const auto& a : r0.roots) {
+      std::size_t seen = 0;
+      for (const auto& b : r1.roots) seen += a.charts == b.charts && shape_distance(a.approximation, b.approximation) < 1e-9;
+      CHECK(seen == 1, "chain6 slices: a root of the uncut sweep found " << seen << " times");
+    }
+    // cut by a budget on 2 threads: exactly the budget, the rest pending in merged regions
+    RI::Tree_solver_parameters Pc;
+    Pc.maximal_boxes = 200;
+    Pc.threads = 2;
+    const RI::Tree_solve_result rc = RI::solve_tree_system(S, Pc);
+    std::size_t in_regions = 0;
+    for (const auto& u : rc.unresolved) in_regions += u.boxes;
+    CHECK(!rc.complete() && rc.stopped == "box budget exhausted" && rc.statistics.boxes == 200,
+          "chain6 cut at 200 boxes on 2 threads: stopped '" << rc.stopped << "' after " << rc.statistics.boxes);
+    CHECK(in_regions >= rc.unresolved.size(), "chain6 cut: " << rc.unresolved.size() << " regions of " << in_regions << " boxes");
+    // (the regions cover the boxes: each root of the full solve is a root of the cut one or
+    // lies in a region)
+    for (const auto& a : r1.roots) {
+      bool covered = false;
+      for (const auto& b : rc.roots) covered = covered || (a.charts == b.charts && shape_distance(a.approximation, b.approximation) < 1e-9);
+      for (const auto& u : rc.unresolved) {
+        bool in = true;
+        for (std::size_t i = 0; i < a.approximation.size() && in; ++i)
+          in = (u.charts[i] == -1 || (u.charts[i] == a.charts[i] && u.box[i].first <= a.approximation[i] && a.approximation[i] <= u.box[i].second));
+        covered = covered || in;
+      }
+      CHECK(covered, "chain6 cut: a root neither found nor in a pending region");
+    }
+    bool thrown = false;
+    RI::Tree_solver_parameters Pb;
+    Pb.sweep_slices = 3;
+    try { RI::solve_tree_system(S, Pb); } catch (const RI::Input_error& e) { thrown = std::string(e.what()).find("power of 2") != std::string::npos; }
+    CHECK(thrown, "sweep_slices = 3: no Input_error");
+  }
   // not a tree of hinges: refused, the edge named
   {
     Loaded l = load(std::string(RIGID_INCIDENCE_DATA_DIR) + "/tetra.json");

@@ -9,6 +9,7 @@
 
 #include <atomic>
 #include <cstddef>
+#include <algorithm>
 #include <string>
 #include <utility>
 #include <vector>
@@ -180,6 +181,25 @@ struct Solver_statistics
   std::size_t oriented_solves = 0;  ///< boxes solved in sheared coordinates (`Subdivision_solver_parameters::oriented_boxes`; their boxes are counted in `boxes`)
   std::size_t oriented_fallbacks = 0; ///< of those, the ones that left something unresolved, exceeded `maximal_coefficients` or had a root not certified again in the original variables, and were subdivided as usual
   double seconds = 0;               ///< wall-clock time of the solve
+  /// the counters of another solve added (seconds too; `maximal_depth`: the deeper)
+  Solver_statistics& operator+=(const Solver_statistics& o)
+  {
+    boxes += o.boxes;
+    excluded += o.excluded;
+    excluded_by_inequality += o.excluded_by_inequality;
+    rejected_roots += o.rejected_roots;
+    splits += o.splits;
+    reductions += o.reductions;
+    krawczyk_tests += o.krawczyk_tests;
+    certified_boxes += o.certified_boxes;
+    duplicates += o.duplicates;
+    precision_retries += o.precision_retries;
+    maximal_depth = (std::max)(maximal_depth, o.maximal_depth);
+    oriented_solves += o.oriented_solves;
+    oriented_fallbacks += o.oriented_fallbacks;
+    seconds += o.seconds;
+    return *this;
+  }
 };
 
 /*!

@@ -1513,6 +1513,7 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
       st.swept = true;
       Tree_solver_parameters tp;
       tp.interrupt = parameters.interrupt;
+      tp.threads = threads;  // (its slices in parallel; the same answer with any number)
       if (parameters.maximal_seconds > 0) tp.maximal_seconds = (std::max)(1e-3, parameters.maximal_seconds - since(started));
       const std::size_t boxes_before = st.boxes;
       tp.progress = [&](std::size_t boxes, std::size_t) { st.boxes = boxes_before + boxes; report(); };

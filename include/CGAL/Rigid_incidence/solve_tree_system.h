@@ -9,11 +9,14 @@
 
 #include <CGAL/Rigid_incidence/Solver_result.h>
 #include <CGAL/Rigid_incidence/Tree_system.h>
+#include <CGAL/Rigid_incidence/internal/parallel.h>
 #include <Eigen/Dense>
+#include <boost/pending/disjoint_sets.hpp>
 #include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <functional>
+#include <mutex>
 #include <set>
 #include <string>
 #include <vector>
@@ -49,6 +52,13 @@ struct Tree_solver_parameters
   /// when the system has a sweep order (`sweep_order()`): branch on its driver only and find
   /// the other variables in order, each from its equation (not with `charts_only`)
   bool sweep = true;
+  /// the sweep cuts its driver's interval into this many slices per chart (a power of 2; 1: no
+  /// cut), solved one by one or in parallel and merged in their order, so that the answer does
+  /// not depend on `threads`
+  std::size_t sweep_slices = 16;
+  /// threads for the sweep's slices (0: every core; oneTBB, 1 without it): the same answer with
+  /// any number, unless a budget, the time limit or an interrupt cuts the solve short
+  unsigned threads = 1;
 };
 
 /// \ingroup PkgRigidIncidenceSolver
@@ -207,15 +217,29 @@ than the driver, that variable. `solve_scene()` solves a chain of hinges braced 
 distances this way (`Scene_solve_parameters::sweep`): the chain of 12 tetrahedra in 5,358 boxes
 (3.6 s), where the branch and prune above needs about 4 times more boxes per body (see the user
 manual, \ref RI_tree_propagation).
+The sweep cuts the driver's interval into `Tree_solver_parameters::sweep_slices` slices per
+chart, solved on `Tree_solver_parameters::threads` threads and merged in their order: the same
+answer with any number of threads (unless a budget, the time limit or an interrupt cuts it).
 
 Roots are certified (the Krawczyk test is a proof in outward-rounded double intervals); a root
 found from two neighbouring boxes is kept once (its enclosure lies in the other's uniqueness
 box). A root on the border between two charts (a hinge at t = +-1, s = +-1) is found in both:
 the caller merges them (`solve_scene()` compares the configurations). Boxes at the minimal width
-are `UNKNOWN`; a budget or an interrupt leaves the rest `PENDING`.
+are `UNKNOWN`; a budget or an interrupt leaves the rest `PENDING`; touching boxes of one chart
+combination are merged into one region, their hull.
 */
 template <class Traits>
-Tree_solve_result solve_tree_system(const Tree_system<Traits>& S, const Tree_solver_parameters& P = Tree_solver_parameters())
+Tree_solve_result solve_tree_system(const Tree_system<Traits>& S, const Tree_solver_parameters& P = Tree_solver_parameters());
+
+namespace internal {
+
+// solve_tree_system(); with `first` (a sweep with a driver), from the one box of the driver in
+// chart first->first over the interval first->second, the other variables whole; `shared`
+// counts the boxes of every slice against the budget
+template <class Traits>
+Tree_solve_result solve_tree_system_from(const Tree_system<Traits>& S, const Tree_solver_parameters& P,
+                                         const std::pair<int, CGAL::Interval_nt<false>>* first,
+                                         std::atomic<std::size_t>* shared)
 {
   typedef CGAL::Interval_nt<false> IT;
   typedef internal::Tree_branch_and_prune_base B;
@@ -519,10 +543,16 @@ Tree_solve_result solve_tree_system(const Tree_system<Traits>& S, const Tree_sol
     stack.clear();
     if (order.driver != Sweep_order::none) {
       Box b1{std::vector<int>(n, WHOLE), std::vector<IT>(n, IT(-1, 1))};
-      b1.ch[order.driver] = 1;
-      stack.push_back(b1);
-      b1.ch[order.driver] = 0;
-      stack.push_back(b1);
+      if (first) {
+        b1.ch[order.driver] = first->first;
+        b1.x[order.driver] = first->second;
+        stack.push_back(b1);
+      } else {
+        b1.ch[order.driver] = 1;
+        stack.push_back(b1);
+        b1.ch[order.driver] = 0;
+        stack.push_back(b1);
+      }
     } else {
       stack.push_back({std::vector<int>(n, WHOLE), std::vector<IT>(n, IT(-1, 1))});
     }
@@ -577,6 +607,7 @@ Tree_solve_result solve_tree_system(const Tree_system<Traits>& S, const Tree_sol
   std::vector<Piece> pieces;
   while (order.exists(n) && !stack.empty()) {
     out.stopped = stop_reason();
+    if (out.stopped.empty() && shared && shared->fetch_add(1) >= P.maximal_boxes) out.stopped = "box budget exhausted";
     if (!out.stopped.empty()) break;
     Box b = std::move(stack.back());
     stack.pop_back();
@@ -740,45 +771,118 @@ Tree_solve_result solve_tree_system(const Tree_system<Traits>& S, const Tree_sol
     }
     bisect(b, v);
   }
-  // unknown boxes: touching ones of one chart combination merged
-  {
-    std::vector<bool> used(unknown.size(), false);
-    for (std::size_t i = 0; i < unknown.size(); ++i) {
-      if (used[i]) continue;
-      used[i] = true;
-      Tree_region r;
-      r.kind = Box_class::UNKNOWN;
-      r.reason = unknown_reason[i];
-      r.charts = unknown[i].ch;
-      std::vector<IT> hull = unknown[i].x;
-      for (bool grew = true; grew;) {
-        grew = false;
-        for (std::size_t j = 0; j < unknown.size(); ++j) {
-          if (used[j] || unknown[j].ch != r.charts) continue;
-          bool touch = true;
-          for (std::size_t k = 0; k < n; ++k) touch = touch && !B::empty_meet(hull[k], unknown[j].x[k]);
-          if (!touch) continue;
-          used[j] = true;
-          ++r.boxes;
-          grew = true;
-          for (std::size_t k = 0; k < n; ++k)
-            hull[k] = IT((std::min)(hull[k].inf(), unknown[j].x[k].inf()), (std::max)(hull[k].sup(), unknown[j].x[k].sup()));
-        }
+  // unknown boxes, then pending ones (in the order they would have been visited): touching
+  // boxes of one chart combination merged into their hull (a cut sweep leaves thousands of
+  // neighbouring boxes), each region where its first box was
+  auto add_regions = [&](const std::vector<const Box*>& boxes, Box_class kind, const std::function<std::string(std::size_t)>& reason) {
+    const std::size_t m = boxes.size();
+    std::vector<std::size_t> rank(m), parent(m);
+    boost::disjoint_sets<std::size_t*, std::size_t*> sets(rank.data(), parent.data());
+    for (std::size_t i = 0; i < m; ++i) sets.make_set(i);
+    // pairs by the first variable's lower bound, so that only overlapping ones are compared
+    std::vector<std::size_t> by(m);
+    for (std::size_t i = 0; i < m; ++i) by[i] = i;
+    auto lo = [&](std::size_t i) { return n == 0 ? 0.0 : boxes[i]->x[0].inf(); };
+    std::sort(by.begin(), by.end(), [&](std::size_t i, std::size_t j) { return lo(i) < lo(j); });
+    for (std::size_t a = 0; a < m; ++a) {
+      const Box& p = *boxes[by[a]];
+      for (std::size_t c = a + 1; c < m && (n == 0 || lo(by[c]) <= p.x[0].sup()); ++c) {
+        const Box& q = *boxes[by[c]];
+        if (q.ch != p.ch || sets.find_set(by[a]) == sets.find_set(by[c])) continue;
+        bool touch = true;
+        for (std::size_t k = 0; k < n && touch; ++k) touch = !B::empty_meet(p.x[k], q.x[k]);
+        if (touch) sets.union_set(by[a], by[c]);
       }
-      for (const IT& h : hull) r.box.push_back({h.inf(), h.sup()});
-      out.unresolved.push_back(std::move(r));
     }
-  }
-  // pending boxes: one region per box, in the order they would have been visited
-  for (auto it = stack.rbegin(); it != stack.rend(); ++it) {
-    Tree_region r;
-    r.kind = Box_class::PENDING;
-    r.reason = out.stopped;
-    r.charts = it->ch;
-    for (const IT& h : it->x) r.box.push_back({h.inf(), h.sup()});
-    out.unresolved.push_back(std::move(r));
+    std::vector<std::size_t> region_of(m, std::size_t(-1));
+    std::vector<std::vector<IT>> hulls;
+    const std::size_t first_region = out.unresolved.size();
+    for (std::size_t i = 0; i < m; ++i) {
+      const std::size_t root = sets.find_set(i);
+      if (region_of[root] == std::size_t(-1)) {
+        region_of[root] = hulls.size();
+        hulls.push_back(boxes[i]->x);
+        Tree_region r;
+        r.kind = kind;
+        r.reason = reason(i);
+        r.charts = boxes[i]->ch;
+        r.boxes = 0;
+        out.unresolved.push_back(std::move(r));
+      }
+      const std::size_t k = region_of[root];
+      ++out.unresolved[first_region + k].boxes;
+      for (std::size_t j = 0; j < n; ++j)
+        hulls[k][j] = IT((std::min)(hulls[k][j].inf(), boxes[i]->x[j].inf()), (std::max)(hulls[k][j].sup(), boxes[i]->x[j].sup()));
+    }
+    for (std::size_t k = 0; k < hulls.size(); ++k)
+      for (const IT& h : hulls[k]) out.unresolved[first_region + k].box.push_back({h.inf(), h.sup()});
+  };
+  {
+    std::vector<const Box*> u, pending;
+    for (const Box& b : unknown) u.push_back(&b);
+    for (auto it = stack.rbegin(); it != stack.rend(); ++it) pending.push_back(&*it);
+    add_regions(u, Box_class::UNKNOWN, [&](std::size_t i) { return unknown_reason[i]; });
+    add_regions(pending, Box_class::PENDING, [&](std::size_t) { return out.stopped; });
   }
   st.seconds = std::chrono::duration<double>(Clock::now() - started).count();
+  return out;
+}
+
+} // namespace internal
+
+template <class Traits>
+Tree_solve_result solve_tree_system(const Tree_system<Traits>& S, const Tree_solver_parameters& P)
+{
+  const std::size_t n = S.number_of_variables();
+  const Sweep_order order = P.sweep && !P.charts_only && S.is_square() ? sweep_order(S) : Sweep_order();
+  const std::size_t K = P.sweep_slices;
+  if (!order.exists(n) || order.driver == Sweep_order::none || K <= 1)
+    return internal::solve_tree_system_from(S, P, nullptr, nullptr);
+  if ((K & (K - 1)) != 0 || K > (std::size_t(1) << 20))
+    throw Input_error("solve_tree_system: sweep_slices must be a power of 2 (at most 2^20), not " + std::to_string(K));
+  typedef CGAL::Interval_nt<false> IT;
+  const auto started = std::chrono::steady_clock::now();
+  // the slices, in the order the sweep visits them (chart 0 first, each from -1 up); their
+  // bounds are exact (K a power of 2)
+  std::vector<std::pair<int, IT>> slices;
+  for (int ch = 0; ch < 2; ++ch)
+    for (std::size_t k = 0; k < K; ++k)
+      slices.push_back({ch, IT(-1 + 2 * double(k) / double(K), -1 + 2 * double(k + 1) / double(K))});
+  std::vector<Tree_solve_result> parts(slices.size());
+  std::atomic<std::size_t> boxes(0), roots(0);
+  std::mutex progress_mutex;
+  Tree_solver_parameters Q = P;
+  if (P.progress)
+    Q.progress = [&](std::size_t, std::size_t) {
+      std::lock_guard<std::mutex> lock(progress_mutex);
+      P.progress((std::min)(boxes.load(), P.maximal_boxes), roots.load());
+    };
+  internal::parallel_for_each_index(slices.size(), P.threads, [&](std::size_t i) {
+    parts[i] = internal::solve_tree_system_from(S, Q, &slices[i], &boxes);
+    roots += parts[i].roots.size();
+  });
+  // merged in slice order; a root on the border of two slices is found in both (its enclosure
+  // then lies in the other's uniqueness box)
+  Tree_solve_result out;
+  auto inside = [&](const std::vector<IT>& a, const std::vector<IT>& b) {
+    for (std::size_t i = 0; i < n; ++i) if (a[i].inf() < b[i].inf() || b[i].sup() < a[i].sup()) return false;
+    return true;
+  };
+  for (Tree_solve_result& r : parts) {
+    for (Tree_root& root : r.roots) {
+      bool duplicate = false;
+      for (const Tree_root& q : out.roots)
+        duplicate = duplicate || (q.charts == root.charts && (inside(root.enclosure, q.uniqueness_box) || inside(q.enclosure, root.uniqueness_box)));
+      if (duplicate) { ++out.statistics.duplicates; continue; }
+      out.roots.push_back(std::move(root));
+    }
+    for (Tree_region& u : r.unresolved) out.unresolved.push_back(std::move(u));
+    if (out.stopped.empty()) out.stopped = r.stopped;
+    const double seconds = out.statistics.seconds;
+    out.statistics += r.statistics;
+    out.statistics.seconds = seconds;
+  }
+  out.statistics.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   return out;
 }
 
