@@ -11,7 +11,6 @@
 #include <CGAL/Rigid_incidence/Tree_system.h>
 #include <CGAL/Rigid_incidence/internal/parallel.h>
 #include <Eigen/Dense>
-#include <boost/pending/disjoint_sets.hpp>
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -235,11 +234,13 @@ namespace internal {
 
 // solve_tree_system(); with `first` (a sweep with a driver), from the one box of the driver in
 // chart first->first over the interval first->second, the other variables whole; `shared`
-// counts the boxes of every slice against the budget
+// counts the boxes of every slice against the budget; `deadline` (with a time limit) is the
+// time limit's end for every slice
 template <class Traits>
 Tree_solve_result solve_tree_system_from(const Tree_system<Traits>& S, const Tree_solver_parameters& P,
                                          const std::pair<int, CGAL::Interval_nt<false>>* first,
-                                         std::atomic<std::size_t>* shared)
+                                         std::atomic<std::size_t>* shared,
+                                         const std::chrono::steady_clock::time_point* deadline = nullptr)
 {
   typedef CGAL::Interval_nt<false> IT;
   typedef internal::Tree_branch_and_prune_base B;
@@ -470,7 +471,8 @@ Tree_solve_result solve_tree_system_from(const Tree_system<Traits>& S, const Tre
   };
   auto stop_reason = [&]() -> std::string {
     if (P.interrupt && P.interrupt->load(std::memory_order_relaxed)) return "interrupted";
-    if (P.maximal_seconds > 0 && std::chrono::duration<double>(Clock::now() - started).count() >= P.maximal_seconds) return "time limit";
+    if (P.maximal_seconds > 0 && (deadline ? Clock::now() >= *deadline : std::chrono::duration<double>(Clock::now() - started).count() >= P.maximal_seconds))
+      return "time limit";
     if (st.boxes >= P.maximal_boxes) return "box budget exhausted";
     return std::string();
   };
@@ -775,47 +777,44 @@ Tree_solve_result solve_tree_system_from(const Tree_system<Traits>& S, const Tre
   // boxes of one chart combination merged into their hull (a cut sweep leaves thousands of
   // neighbouring boxes), each region where its first box was
   auto add_regions = [&](const std::vector<const Box*>& boxes, Box_class kind, const std::function<std::string(std::size_t)>& reason) {
-    const std::size_t m = boxes.size();
-    std::vector<std::size_t> rank(m), parent(m);
-    boost::disjoint_sets<std::size_t*, std::size_t*> sets(rank.data(), parent.data());
-    for (std::size_t i = 0; i < m; ++i) sets.make_set(i);
-    // pairs by the first variable's lower bound, so that only overlapping ones are compared
-    std::vector<std::size_t> by(m);
-    for (std::size_t i = 0; i < m; ++i) by[i] = i;
-    auto lo = [&](std::size_t i) { return n == 0 ? 0.0 : boxes[i]->x[0].inf(); };
-    std::sort(by.begin(), by.end(), [&](std::size_t i, std::size_t j) { return lo(i) < lo(j); });
-    for (std::size_t a = 0; a < m; ++a) {
-      const Box& p = *boxes[by[a]];
-      for (std::size_t c = a + 1; c < m && (n == 0 || lo(by[c]) <= p.x[0].sup()); ++c) {
-        const Box& q = *boxes[by[c]];
-        if (q.ch != p.ch || sets.find_set(by[a]) == sets.find_set(by[c])) continue;
-        bool touch = true;
-        for (std::size_t k = 0; k < n && touch; ++k) touch = !B::empty_meet(p.x[k], q.x[k]);
-        if (touch) sets.union_set(by[a], by[c]);
-      }
+    // each box into the first region of its charts whose hull it touches, then regions whose
+    // hulls touch merged, until none do (linear in the boxes for a few regions)
+    struct Region { std::size_t first; std::size_t count; std::vector<IT> hull; bool alive; };
+    std::vector<Region> regions;
+    auto touch = [&](const std::vector<IT>& p, const std::vector<IT>& q) {
+      for (std::size_t k = 0; k < n; ++k) if (B::empty_meet(p[k], q[k])) return false;
+      return true;
+    };
+    auto join = [&](std::vector<IT>& h, const std::vector<IT>& x) {
+      for (std::size_t k = 0; k < n; ++k) h[k] = IT((std::min)(h[k].inf(), x[k].inf()), (std::max)(h[k].sup(), x[k].sup()));
+    };
+    for (std::size_t i = 0; i < boxes.size(); ++i) {
+      bool placed = false;
+      for (Region& r : regions)
+        if (boxes[r.first]->ch == boxes[i]->ch && touch(r.hull, boxes[i]->x)) { join(r.hull, boxes[i]->x); ++r.count; placed = true; break; }
+      if (!placed) regions.push_back({i, 1, boxes[i]->x, true});
     }
-    std::vector<std::size_t> region_of(m, std::size_t(-1));
-    std::vector<std::vector<IT>> hulls;
-    const std::size_t first_region = out.unresolved.size();
-    for (std::size_t i = 0; i < m; ++i) {
-      const std::size_t root = sets.find_set(i);
-      if (region_of[root] == std::size_t(-1)) {
-        region_of[root] = hulls.size();
-        hulls.push_back(boxes[i]->x);
-        Tree_region r;
-        r.kind = kind;
-        r.reason = reason(i);
-        r.charts = boxes[i]->ch;
-        r.boxes = 0;
-        out.unresolved.push_back(std::move(r));
-      }
-      const std::size_t k = region_of[root];
-      ++out.unresolved[first_region + k].boxes;
-      for (std::size_t j = 0; j < n; ++j)
-        hulls[k][j] = IT((std::min)(hulls[k][j].inf(), boxes[i]->x[j].inf()), (std::max)(hulls[k][j].sup(), boxes[i]->x[j].sup()));
+    for (bool merged = true; merged;) {
+      merged = false;
+      for (std::size_t i = 0; i < regions.size(); ++i)
+        for (std::size_t j = i + 1; regions[i].alive && j < regions.size(); ++j)
+          if (regions[j].alive && boxes[regions[i].first]->ch == boxes[regions[j].first]->ch && touch(regions[i].hull, regions[j].hull)) {
+            join(regions[i].hull, regions[j].hull);
+            regions[i].count += regions[j].count;
+            regions[j].alive = false;
+            merged = true;
+          }
     }
-    for (std::size_t k = 0; k < hulls.size(); ++k)
-      for (const IT& h : hulls[k]) out.unresolved[first_region + k].box.push_back({h.inf(), h.sup()});
+    for (const Region& g : regions) {
+      if (!g.alive) continue;
+      Tree_region r;
+      r.kind = kind;
+      r.reason = reason(g.first);
+      r.charts = boxes[g.first]->ch;
+      r.boxes = g.count;
+      for (const IT& h : g.hull) r.box.push_back({h.inf(), h.sup()});
+      out.unresolved.push_back(std::move(r));
+    }
   };
   {
     std::vector<const Box*> u, pending;
@@ -842,6 +841,8 @@ Tree_solve_result solve_tree_system(const Tree_system<Traits>& S, const Tree_sol
     throw Input_error("solve_tree_system: sweep_slices must be a power of 2 (at most 2^20), not " + std::to_string(K));
   typedef CGAL::Interval_nt<false> IT;
   const auto started = std::chrono::steady_clock::now();
+  // one time limit for all the slices
+  const auto deadline = started + std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(P.maximal_seconds));
   // the slices, in the order the sweep visits them (chart 0 first, each from -1 up); their
   // bounds are exact (K a power of 2)
   std::vector<std::pair<int, IT>> slices;
@@ -858,7 +859,7 @@ Tree_solve_result solve_tree_system(const Tree_system<Traits>& S, const Tree_sol
       P.progress((std::min)(boxes.load(), P.maximal_boxes), roots.load());
     };
   internal::parallel_for_each_index(slices.size(), P.threads, [&](std::size_t i) {
-    parts[i] = internal::solve_tree_system_from(S, Q, &slices[i], &boxes);
+    parts[i] = internal::solve_tree_system_from(S, Q, &slices[i], &boxes, &deadline);
     roots += parts[i].roots.size();
   });
   // merged in slice order; a root on the border of two slices is found in both (its enclosure
