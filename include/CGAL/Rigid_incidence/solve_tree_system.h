@@ -51,13 +51,18 @@ struct Tree_solver_parameters
   /// when the system has a sweep order (`sweep_order()`): branch on its driver only and find
   /// the other variables in order, each from its equation (not with `charts_only`)
   bool sweep = true;
-  /// the sweep cuts its driver's interval into this many slices per chart (a power of 2; 1: no
-  /// cut), solved one by one or in parallel and merged in their order, so that the answer does
-  /// not depend on `threads`
+  /// the sweep cuts its driver's interval into this many slices per chart (a power of 2, 1 for
+  /// no cut; anything else is refused with an `Input_error`), solved one by one or in parallel
+  /// and merged in their order, so that the answer does not depend on `threads`
   std::size_t sweep_slices = 16;
   /// threads for the sweep's slices (0: every core; oneTBB, 1 without it): the same answer with
-  /// any number, unless a budget, the time limit or an interrupt cuts the solve short
+  /// any number, unless a budget, the time limit or an interrupt cuts the solve short (`progress`
+  /// is then called from any of them, one call at a time)
   unsigned threads = 1;
+  /// the sweep's slices are solved as tasks of at most this many boxes each (the boxes a task
+  /// leaves: tasks of the next round), so that uneven work spreads over the threads; the answer
+  /// (roots, their order, boxes) does not depend on it
+  std::size_t task_boxes = 4096;
 };
 
 /// \ingroup PkgRigidIncidenceSolver
@@ -217,8 +222,11 @@ distances this way (`Scene_solve_parameters::sweep`): the chain of 12 tetrahedra
 (3.6 s), where the branch and prune above needs about 4 times more boxes per body (see the user
 manual, \ref RI_tree_propagation).
 The sweep cuts the driver's interval into `Tree_solver_parameters::sweep_slices` slices per
-chart, solved on `Tree_solver_parameters::threads` threads and merged in their order: the same
-answer with any number of threads (unless a budget, the time limit or an interrupt cuts it).
+chart and solves them as tasks of at most `Tree_solver_parameters::task_boxes` boxes each, in rounds on
+`Tree_solver_parameters::threads` threads: the boxes a task leaves become the next round's
+tasks, and the answers are merged in depth-first order, so the answer (roots, their order,
+boxes) is the same with any number of threads (unless a budget, the time limit or an interrupt
+cuts it).
 
 Roots are certified (the Krawczyk test is a proof in outward-rounded double intervals); a root
 found from two neighbouring boxes is kept once (its enclosure lies in the other's uniqueness
@@ -232,15 +240,91 @@ Tree_solve_result solve_tree_system(const Tree_system<Traits>& S, const Tree_sol
 
 namespace internal {
 
+// a box of solve_tree_system(); `groups`: where slicing left a variable in separate pieces (or
+// in both charts), the pieces, which the split takes as the children; `level`: the sweep's
+// steps before it are done
+struct Tree_piece { int ch; CGAL::Interval_nt<false> x; };
+struct Tree_box
+{
+  std::vector<int> ch;
+  std::vector<CGAL::Interval_nt<false>> x;
+  std::size_t group_variable = std::size_t(-1);
+  std::vector<Tree_piece> groups;
+  std::size_t level = 0;
+};
+
+// the boxes as regions appended to `out`: touching boxes of one chart combination merged into
+// their hull, each region where its first box was
+inline void add_tree_regions(std::size_t n, const std::vector<const Tree_box*>& boxes, Box_class kind,
+                             const std::function<std::string(std::size_t)>& reason, std::vector<Tree_region>& out)
+{
+  typedef CGAL::Interval_nt<false> IT;
+  typedef Tree_branch_and_prune_base B;
+  // each box into the first region of its charts whose hull it touches, then regions whose
+  // hulls touch merged, until none do (linear in the boxes for a few regions)
+  struct Region { std::size_t first; std::size_t count; std::vector<IT> hull; bool alive; };
+  std::vector<Region> regions;
+  auto touch = [&](const std::vector<IT>& p, const std::vector<IT>& q) {
+    for (std::size_t k = 0; k < n; ++k) if (B::empty_meet(p[k], q[k])) return false;
+    return true;
+  };
+  auto join = [&](std::vector<IT>& h, const std::vector<IT>& x) {
+    for (std::size_t k = 0; k < n; ++k) h[k] = IT((std::min)(h[k].inf(), x[k].inf()), (std::max)(h[k].sup(), x[k].sup()));
+  };
+  for (std::size_t i = 0; i < boxes.size(); ++i) {
+    bool placed = false;
+    for (Region& r : regions)
+      if (boxes[r.first]->ch == boxes[i]->ch && touch(r.hull, boxes[i]->x)) { join(r.hull, boxes[i]->x); ++r.count; placed = true; break; }
+    if (!placed) regions.push_back({i, 1, boxes[i]->x, true});
+  }
+  for (bool merged = true; merged;) {
+    merged = false;
+    for (std::size_t i = 0; i < regions.size(); ++i)
+      for (std::size_t j = i + 1; regions[i].alive && j < regions.size(); ++j)
+        if (regions[j].alive && boxes[regions[i].first]->ch == boxes[regions[j].first]->ch && touch(regions[i].hull, regions[j].hull)) {
+          join(regions[i].hull, regions[j].hull);
+          regions[i].count += regions[j].count;
+          regions[j].alive = false;
+          merged = true;
+        }
+  }
+  for (const Region& g : regions) {
+    if (!g.alive) continue;
+    Tree_region r;
+    r.kind = kind;
+    r.reason = reason(g.first);
+    r.charts = boxes[g.first]->ch;
+    r.boxes = g.count;
+    for (const IT& h : g.hull) r.box.push_back({h.inf(), h.sup()});
+    out.push_back(std::move(r));
+  }
+}
+
+// what a task of the sweep leaves to the caller: its unknown boxes (and why), its pending
+// boxes (a stop), and the boxes it would have visited next (its share of boxes done)
+struct Tree_task_boxes
+{
+  std::vector<Tree_box> unknown;
+  std::vector<std::string> reasons;
+  std::vector<Tree_box> pending;
+  std::vector<Tree_box> left_over;
+};
+
 // solve_tree_system(); with `first` (a sweep with a driver), from the one box of the driver in
 // chart first->first over the interval first->second, the other variables whole; `shared`
-// counts the boxes of every slice against the budget; `deadline` (with a time limit) is the
-// time limit's end for every slice
+// counts the boxes of every slice against the budget (and calls `progress`); `since` (with a
+// time limit) is when the time limit started for every slice. With `start` (a sweep), from
+// these boxes (the first visited first). With `task`, a task of the sweep: it stops after
+// `task_boxes` boxes and leaves the boxes it would have visited next in `task->left_over`, in
+// that order; its unknown and pending boxes go to `task` as boxes, and its roots are all kept
+// (the caller merges regions and duplicates over every task, in depth-first order)
 template <class Traits>
 Tree_solve_result solve_tree_system_from(const Tree_system<Traits>& S, const Tree_solver_parameters& P,
                                          const std::pair<int, CGAL::Interval_nt<false>>* first,
                                          std::atomic<std::size_t>* shared,
-                                         const std::chrono::steady_clock::time_point* deadline = nullptr)
+                                         const std::chrono::steady_clock::time_point* since = nullptr,
+                                         const std::vector<Tree_box>* start = nullptr, std::size_t task_boxes = 0,
+                                         Tree_task_boxes* task = nullptr)
 {
   typedef CGAL::Interval_nt<false> IT;
   typedef internal::Tree_branch_and_prune_base B;
@@ -254,8 +338,8 @@ Tree_solve_result solve_tree_system_from(const Tree_system<Traits>& S, const Tre
   Solver_statistics& st = out.statistics;
   // a box; `groups`: where slicing left a variable in separate pieces (or in both charts), the
   // pieces, which the split takes as the children
-  struct Piece { int ch; IT x; };
-  struct Box { std::vector<int> ch; std::vector<IT> x; std::size_t group_variable = std::size_t(-1); std::vector<Piece> groups; std::size_t level = 0; };
+  typedef Tree_piece Piece;
+  typedef Tree_box Box;
   std::vector<Box> stack;
   stack.push_back({std::vector<int>(n, WHOLE), std::vector<IT>(n, IT(-1, 1))});
   std::vector<Box> unknown;
@@ -471,7 +555,7 @@ Tree_solve_result solve_tree_system_from(const Tree_system<Traits>& S, const Tre
   };
   auto stop_reason = [&]() -> std::string {
     if (P.interrupt && P.interrupt->load(std::memory_order_relaxed)) return "interrupted";
-    if (P.maximal_seconds > 0 && (deadline ? Clock::now() >= *deadline : std::chrono::duration<double>(Clock::now() - started).count() >= P.maximal_seconds))
+    if (P.maximal_seconds > 0 && std::chrono::duration<double>(Clock::now() - (since ? *since : started)).count() >= P.maximal_seconds)
       return "time limit";
     if (st.boxes >= P.maximal_boxes) return "box budget exhausted";
     return std::string();
@@ -502,7 +586,7 @@ Tree_solve_result solve_tree_system_from(const Tree_system<Traits>& S, const Tre
       return true;
     };
     for (const Tree_root& r : out.roots)
-      if (r.charts == ch && (inside(enc, r.uniqueness_box) || inside(r.enclosure, uniq))) { ++st.duplicates; return; }
+      if (!task && r.charts == ch && (inside(enc, r.uniqueness_box) || inside(r.enclosure, uniq))) { ++st.duplicates; return; }
     Tree_root r;
     r.charts = ch;
     r.enclosure = enc;
@@ -543,7 +627,9 @@ Tree_solve_result solve_tree_system_from(const Tree_system<Traits>& S, const Tre
   const Sweep_order order = P.sweep && !P.charts_only ? sweep_order(S) : Sweep_order();
   if (order.exists(n)) {
     stack.clear();
-    if (order.driver != Sweep_order::none) {
+    if (start) {
+      for (auto it = start->rbegin(); it != start->rend(); ++it) stack.push_back(*it);
+    } else if (order.driver != Sweep_order::none) {
       Box b1{std::vector<int>(n, WHOLE), std::vector<IT>(n, IT(-1, 1))};
       if (first) {
         b1.ch[order.driver] = first->first;
@@ -609,12 +695,22 @@ Tree_solve_result solve_tree_system_from(const Tree_system<Traits>& S, const Tre
   std::vector<Piece> pieces;
   while (order.exists(n) && !stack.empty()) {
     out.stopped = stop_reason();
-    if (out.stopped.empty() && shared && shared->fetch_add(1) >= P.maximal_boxes) out.stopped = "box budget exhausted";
+    if (out.stopped.empty() && task && st.boxes >= task_boxes) {
+      // the task's share done: the caller solves the rest
+      for (auto it = stack.rbegin(); it != stack.rend(); ++it) task->left_over.push_back(std::move(*it));
+      stack.clear();
+      break;
+    }
+    if (out.stopped.empty() && shared) {
+      const std::size_t k = shared->fetch_add(1);
+      if (k >= P.maximal_boxes) out.stopped = "box budget exhausted";
+      else if (P.progress && (k + 1) % 4096 == 0) P.progress(k + 1, out.roots.size());
+    }
     if (!out.stopped.empty()) break;
     Box b = std::move(stack.back());
     stack.pop_back();
     ++st.boxes;
-    if (P.progress && st.boxes % 4096 == 0) P.progress(st.boxes, out.roots.size());
+    if (P.progress && !shared && st.boxes % 4096 == 0) P.progress(st.boxes, out.roots.size());
     // each step's variable from its equation, in order; separate pieces are separate boxes
     bool excluded = false;
     for (std::size_t i = b.level; i < order.steps.size() && !excluded; ++i) {
@@ -776,52 +872,16 @@ Tree_solve_result solve_tree_system_from(const Tree_system<Traits>& S, const Tre
   // unknown boxes, then pending ones (in the order they would have been visited): touching
   // boxes of one chart combination merged into their hull (a cut sweep leaves thousands of
   // neighbouring boxes), each region where its first box was
-  auto add_regions = [&](const std::vector<const Box*>& boxes, Box_class kind, const std::function<std::string(std::size_t)>& reason) {
-    // each box into the first region of its charts whose hull it touches, then regions whose
-    // hulls touch merged, until none do (linear in the boxes for a few regions)
-    struct Region { std::size_t first; std::size_t count; std::vector<IT> hull; bool alive; };
-    std::vector<Region> regions;
-    auto touch = [&](const std::vector<IT>& p, const std::vector<IT>& q) {
-      for (std::size_t k = 0; k < n; ++k) if (B::empty_meet(p[k], q[k])) return false;
-      return true;
-    };
-    auto join = [&](std::vector<IT>& h, const std::vector<IT>& x) {
-      for (std::size_t k = 0; k < n; ++k) h[k] = IT((std::min)(h[k].inf(), x[k].inf()), (std::max)(h[k].sup(), x[k].sup()));
-    };
-    for (std::size_t i = 0; i < boxes.size(); ++i) {
-      bool placed = false;
-      for (Region& r : regions)
-        if (boxes[r.first]->ch == boxes[i]->ch && touch(r.hull, boxes[i]->x)) { join(r.hull, boxes[i]->x); ++r.count; placed = true; break; }
-      if (!placed) regions.push_back({i, 1, boxes[i]->x, true});
-    }
-    for (bool merged = true; merged;) {
-      merged = false;
-      for (std::size_t i = 0; i < regions.size(); ++i)
-        for (std::size_t j = i + 1; regions[i].alive && j < regions.size(); ++j)
-          if (regions[j].alive && boxes[regions[i].first]->ch == boxes[regions[j].first]->ch && touch(regions[i].hull, regions[j].hull)) {
-            join(regions[i].hull, regions[j].hull);
-            regions[i].count += regions[j].count;
-            regions[j].alive = false;
-            merged = true;
-          }
-    }
-    for (const Region& g : regions) {
-      if (!g.alive) continue;
-      Tree_region r;
-      r.kind = kind;
-      r.reason = reason(g.first);
-      r.charts = boxes[g.first]->ch;
-      r.boxes = g.count;
-      for (const IT& h : g.hull) r.box.push_back({h.inf(), h.sup()});
-      out.unresolved.push_back(std::move(r));
-    }
-  };
-  {
+  if (task) {
+    task->unknown = std::move(unknown);
+    task->reasons = std::move(unknown_reason);
+    for (auto it = stack.rbegin(); it != stack.rend(); ++it) task->pending.push_back(std::move(*it));
+  } else {
     std::vector<const Box*> u, pending;
     for (const Box& b : unknown) u.push_back(&b);
     for (auto it = stack.rbegin(); it != stack.rend(); ++it) pending.push_back(&*it);
-    add_regions(u, Box_class::UNKNOWN, [&](std::size_t i) { return unknown_reason[i]; });
-    add_regions(pending, Box_class::PENDING, [&](std::size_t) { return out.stopped; });
+    add_tree_regions(n, u, Box_class::UNKNOWN, [&](std::size_t i) { return unknown_reason[i]; }, out.unresolved);
+    add_tree_regions(n, pending, Box_class::PENDING, [&](std::size_t) { return out.stopped; }, out.unresolved);
   }
   st.seconds = std::chrono::duration<double>(Clock::now() - started).count();
   return out;
@@ -833,43 +893,83 @@ template <class Traits>
 Tree_solve_result solve_tree_system(const Tree_system<Traits>& S, const Tree_solver_parameters& P)
 {
   const std::size_t n = S.number_of_variables();
-  const Sweep_order order = P.sweep && !P.charts_only && S.is_square() ? sweep_order(S) : Sweep_order();
   const std::size_t K = P.sweep_slices;
-  if (!order.exists(n) || order.driver == Sweep_order::none || K <= 1)
+  if (K == 0 || (K & (K - 1)) != 0 || K > (std::size_t(1) << 20))
+    throw Input_error("solve_tree_system: sweep_slices must be a power of 2 (1 to 2^20), not " + std::to_string(K));
+  const Sweep_order order = P.sweep && !P.charts_only && S.is_square() ? sweep_order(S) : Sweep_order();
+  if (!order.exists(n) || order.driver == Sweep_order::none)
     return internal::solve_tree_system_from(S, P, nullptr, nullptr);
-  if ((K & (K - 1)) != 0 || K > (std::size_t(1) << 20))
-    throw Input_error("solve_tree_system: sweep_slices must be a power of 2 (at most 2^20), not " + std::to_string(K));
   typedef CGAL::Interval_nt<false> IT;
-  const auto started = std::chrono::steady_clock::now();
-  // one time limit for all the slices
-  const auto deadline = started + std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(P.maximal_seconds));
+  const auto started = std::chrono::steady_clock::now();  // (one time limit for every task)
   // the slices, in the order the sweep visits them (chart 0 first, each from -1 up); their
   // bounds are exact (K a power of 2)
   std::vector<std::pair<int, IT>> slices;
   for (int ch = 0; ch < 2; ++ch)
     for (std::size_t k = 0; k < K; ++k)
       slices.push_back({ch, IT(-1 + 2 * double(k) / double(K), -1 + 2 * double(k + 1) / double(K))});
-  std::vector<Tree_solve_result> parts(slices.size());
-  std::atomic<std::size_t> boxes(0), roots(0);
+  // Rounds of tasks, each at most `task_boxes` boxes of the depth-first search from its boxes;
+  // what a task leaves becomes tasks of the next round, one per box. A task's answer is its
+  // own, then its leftover boxes' in the order they would have been visited: the order of one
+  // depth-first search whatever the threads (the work is uneven: on the chain of 16, one
+  // slice of 32 holds 60 % of it, in a fold of a few hinges over a narrow driver interval).
+  const std::size_t task_boxes = (std::max<std::size_t>)(P.task_boxes, 1);
+  struct Task
+  {
+    std::vector<internal::Tree_box> start;
+    const std::pair<int, IT>* slice = nullptr;
+    Tree_solve_result result;
+    internal::Tree_task_boxes boxes;
+    std::vector<std::size_t> children;
+  };
+  std::vector<Task> tasks(slices.size());
+  for (std::size_t i = 0; i < slices.size(); ++i) tasks[i].slice = &slices[i];
+  std::atomic<std::size_t> boxes(0);
   std::mutex progress_mutex;
   Tree_solver_parameters Q = P;
-  if (P.progress)
-    Q.progress = [&](std::size_t, std::size_t) {
+  if (P.progress)  // (from any thread, one call at a time; roots: before duplicates are merged)
+    Q.progress = [&](std::size_t b, std::size_t) {
       std::lock_guard<std::mutex> lock(progress_mutex);
-      P.progress((std::min)(boxes.load(), P.maximal_boxes), roots.load());
+      std::size_t r = 0;
+      for (const Task& t : tasks) r += t.result.roots.size();
+      P.progress(b, r);
     };
-  internal::parallel_for_each_index(slices.size(), P.threads, [&](std::size_t i) {
-    parts[i] = internal::solve_tree_system_from(S, Q, &slices[i], &boxes, &deadline);
-    roots += parts[i].roots.size();
-  });
-  // merged in slice order; a root on the border of two slices is found in both (its enclosure
-  // then lies in the other's uniqueness box)
+  for (std::size_t begin = 0; begin < tasks.size();) {
+    const std::size_t end = tasks.size();
+    internal::parallel_for_each_index(end - begin, P.threads, [&](std::size_t i) {
+      Task& t = tasks[begin + i];
+      Tree_solve_result r = internal::solve_tree_system_from(S, Q, t.start.empty() ? t.slice : nullptr, &boxes, &started,
+                                                             t.start.empty() ? nullptr : &t.start, task_boxes, &t.boxes);
+      std::lock_guard<std::mutex> lock(progress_mutex);  // (the progress reads the results)
+      t.result = std::move(r);
+    });
+    for (std::size_t i = begin; i < end; ++i) {
+      std::vector<internal::Tree_box> left = std::move(tasks[i].boxes.left_over);
+      for (internal::Tree_box& b : left) {
+        tasks[i].children.push_back(tasks.size());
+        Task c;
+        c.start.push_back(std::move(b));
+        tasks.push_back(std::move(c));
+      }
+    }
+    begin = end;
+  }
+  // the tasks in depth-first order: roots (a root found from two neighbouring boxes kept once:
+  // its enclosure lies in the other's uniqueness box), then the unknown and pending boxes
+  // merged into regions, as one search would have
   Tree_solve_result out;
   auto inside = [&](const std::vector<IT>& a, const std::vector<IT>& b) {
     for (std::size_t i = 0; i < n; ++i) if (a[i].inf() < b[i].inf() || b[i].sup() < a[i].sup()) return false;
     return true;
   };
-  for (Tree_solve_result& r : parts) {
+  std::vector<const internal::Tree_box*> unknown, pending;
+  std::vector<const std::string*> unknown_reason, pending_reason;
+  std::vector<std::size_t> todo;
+  for (std::size_t i = slices.size(); i-- > 0;) todo.push_back(i);
+  while (!todo.empty()) {
+    Task& t = tasks[todo.back()];
+    todo.pop_back();
+    for (auto it = t.children.rbegin(); it != t.children.rend(); ++it) todo.push_back(*it);
+    Tree_solve_result& r = t.result;
     for (Tree_root& root : r.roots) {
       bool duplicate = false;
       for (const Tree_root& q : out.roots)
@@ -877,12 +977,21 @@ Tree_solve_result solve_tree_system(const Tree_system<Traits>& S, const Tree_sol
       if (duplicate) { ++out.statistics.duplicates; continue; }
       out.roots.push_back(std::move(root));
     }
-    for (Tree_region& u : r.unresolved) out.unresolved.push_back(std::move(u));
+    for (std::size_t i = 0; i < t.boxes.unknown.size(); ++i) {
+      unknown.push_back(&t.boxes.unknown[i]);
+      unknown_reason.push_back(&t.boxes.reasons[i]);
+    }
+    for (const internal::Tree_box& b : t.boxes.pending) {
+      pending.push_back(&b);
+      pending_reason.push_back(&r.stopped);
+    }
     if (out.stopped.empty()) out.stopped = r.stopped;
     const double seconds = out.statistics.seconds;
     out.statistics += r.statistics;
     out.statistics.seconds = seconds;
   }
+  internal::add_tree_regions(n, unknown, Box_class::UNKNOWN, [&](std::size_t i) { return *unknown_reason[i]; }, out.unresolved);
+  internal::add_tree_regions(n, pending, Box_class::PENDING, [&](std::size_t i) { return *pending_reason[i]; }, out.unresolved);
   out.statistics.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   return out;
 }
