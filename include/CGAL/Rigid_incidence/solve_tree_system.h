@@ -310,8 +310,8 @@ struct Tree_task_boxes
   std::vector<Tree_box> left_over;
 };
 
-// solve_tree_system(); with `first` (a sweep with a driver), from the one box of the driver in
-// chart first->first over the interval first->second, the other variables whole; `shared`
+// solve_tree_system(); `sweep`, if given, is the system's sweep order (not computed again);
+// `shared`
 // counts the boxes of every slice against the budget (and calls `progress`); `since` (with a
 // time limit) is when the time limit started for every slice. With `start` (a sweep), from
 // these boxes (the first visited first). With `task`, a task of the sweep: it stops after
@@ -320,7 +320,7 @@ struct Tree_task_boxes
 // (the caller merges regions and duplicates over every task, in depth-first order)
 template <class Traits>
 Tree_solve_result solve_tree_system_from(const Tree_system<Traits>& S, const Tree_solver_parameters& P,
-                                         const std::pair<int, CGAL::Interval_nt<false>>* first,
+                                         const Sweep_order* sweep,
                                          std::atomic<std::size_t>* shared,
                                          const std::chrono::steady_clock::time_point* since = nullptr,
                                          const std::vector<Tree_box>* start = nullptr, std::size_t task_boxes = 0,
@@ -624,23 +624,17 @@ Tree_solve_result solve_tree_system_from(const Tree_system<Traits>& S, const Tre
     stack.push_back(std::move(hi));
     stack.push_back(std::move(lo));
   };
-  const Sweep_order order = P.sweep && !P.charts_only ? sweep_order(S) : Sweep_order();
+  const Sweep_order order = sweep ? *sweep : P.sweep && !P.charts_only ? sweep_order(S) : Sweep_order();
   if (order.exists(n)) {
     stack.clear();
     if (start) {
       for (auto it = start->rbegin(); it != start->rend(); ++it) stack.push_back(*it);
     } else if (order.driver != Sweep_order::none) {
       Box b1{std::vector<int>(n, WHOLE), std::vector<IT>(n, IT(-1, 1))};
-      if (first) {
-        b1.ch[order.driver] = first->first;
-        b1.x[order.driver] = first->second;
-        stack.push_back(b1);
-      } else {
-        b1.ch[order.driver] = 1;
-        stack.push_back(b1);
-        b1.ch[order.driver] = 0;
-        stack.push_back(b1);
-      }
+      b1.ch[order.driver] = 1;
+      stack.push_back(b1);
+      b1.ch[order.driver] = 0;
+      stack.push_back(b1);
     } else {
       stack.push_back({std::vector<int>(n, WHOLE), std::vector<IT>(n, IT(-1, 1))});
     }
@@ -903,10 +897,14 @@ Tree_solve_result solve_tree_system(const Tree_system<Traits>& S, const Tree_sol
   const auto started = std::chrono::steady_clock::now();  // (one time limit for every task)
   // the slices, in the order the sweep visits them (chart 0 first, each from -1 up); their
   // bounds are exact (K a power of 2)
-  std::vector<std::pair<int, IT>> slices;
+  std::vector<internal::Tree_box> slices;
   for (int ch = 0; ch < 2; ++ch)
-    for (std::size_t k = 0; k < K; ++k)
-      slices.push_back({ch, IT(-1 + 2 * double(k) / double(K), -1 + 2 * double(k + 1) / double(K))});
+    for (std::size_t k = 0; k < K; ++k) {
+      internal::Tree_box b{std::vector<int>(n, Tree_system<Traits>::WHOLE), std::vector<IT>(n, IT(-1, 1))};
+      b.ch[order.driver] = ch;
+      b.x[order.driver] = IT(-1 + 2 * double(k) / double(K), -1 + 2 * double(k + 1) / double(K));
+      slices.push_back(std::move(b));
+    }
   // Rounds of tasks, each at most `task_boxes` boxes of the depth-first search from its boxes;
   // what a task leaves becomes tasks of the next round, one per box. A task's answer is its
   // own, then its leftover boxes' in the order they would have been visited: the order of one
@@ -916,13 +914,12 @@ Tree_solve_result solve_tree_system(const Tree_system<Traits>& S, const Tree_sol
   struct Task
   {
     std::vector<internal::Tree_box> start;
-    const std::pair<int, IT>* slice = nullptr;
     Tree_solve_result result;
     internal::Tree_task_boxes boxes;
     std::vector<std::size_t> children;
   };
   std::vector<Task> tasks(slices.size());
-  for (std::size_t i = 0; i < slices.size(); ++i) tasks[i].slice = &slices[i];
+  for (std::size_t i = 0; i < slices.size(); ++i) tasks[i].start.push_back(std::move(slices[i]));
   std::atomic<std::size_t> boxes(0);
   std::mutex progress_mutex;
   Tree_solver_parameters Q = P;
@@ -937,8 +934,7 @@ Tree_solve_result solve_tree_system(const Tree_system<Traits>& S, const Tree_sol
     const std::size_t end = tasks.size();
     internal::parallel_for_each_index(end - begin, P.threads, [&](std::size_t i) {
       Task& t = tasks[begin + i];
-      Tree_solve_result r = internal::solve_tree_system_from(S, Q, t.start.empty() ? t.slice : nullptr, &boxes, &started,
-                                                             t.start.empty() ? nullptr : &t.start, task_boxes, &t.boxes);
+      Tree_solve_result r = internal::solve_tree_system_from(S, Q, &order, &boxes, &started, &t.start, task_boxes, &t.boxes);
       std::lock_guard<std::mutex> lock(progress_mutex);  // (the progress reads the results)
       t.result = std::move(r);
     });
