@@ -158,7 +158,8 @@ static const char* usage_text =
   "                 implied_bodies, standardization, remaining_distances, dof,\n"
   "                 overlap_graph,\n"
   "                 covering_set, non_covering, incidence_tree {root, edges [[parent, child,\n"
-  "                 weight]], weight, depth_sum, proven_optimal, strategy}, optimal_trees_tied,\n"
+  "                 weight]], weight, distance_path_sum, depth_sum, proven_optimal,\n"
+  "                 strategy}, optimal_trees_tied,\n"
   "                 reduced_variables, naive_variables, well_formed_incidences (each\n"
   "                 {point, bodies: [a, b], coordinates: [1,2,3] or [1,2], role: \"tree\" |\n"
   "                 \"remaining\"}), redundant_incidences (each {point, bodies,\n"
@@ -387,7 +388,8 @@ int analyze(const Options& o)
     j["non_covering"] = non;
     nlohmann::ordered_json tedges = nlohmann::ordered_json::array();
     for (const auto& e : t.edges) tedges.push_back({name(e.parent), name(e.child), e.weight});
-    j["incidence_tree"] = {{"root", name(t.root)}, {"edges", tedges}, {"weight", t.weight}, {"depth_sum", t.depth_sum},
+    j["incidence_tree"] = {{"root", name(t.root)}, {"edges", tedges}, {"weight", t.weight},
+                           {"distance_path_sum", t.distance_path_sum}, {"depth_sum", t.depth_sum},
                            {"proven_optimal", t.proven_optimal}, {"strategy", t.strategy}};
     j["optimal_trees_tied"] = t.ties;
     nlohmann::ordered_json wfj = nlohmann::ordered_json::array(), redj = nlohmann::ordered_json::array();
@@ -466,8 +468,8 @@ int analyze(const Options& o)
   std::cout << "\nnot in the covering set:";
   if (t.non_covering.empty()) std::cout << " (none)";
   for (auto b : t.non_covering) std::cout << " " << name(b);
-  std::cout << "\n\noptimal incidence tree: root " << name(t.root) << ", weight " << t.weight << ", depth sum " << t.depth_sum
-            << (t.proven_optimal ? " (proven optimal)" : " (NOT proven optimal)") << "\n";
+  std::cout << "\n\noptimal incidence tree: root " << name(t.root) << ", weight " << t.weight << ", distance paths "
+            << t.distance_path_sum << ", depth sum " << t.depth_sum << (t.proven_optimal ? " (proven optimal)" : " (NOT proven optimal)") << "\n";
   for (const auto& e : t.edges) {
     std::cout << "  " << name(e.parent) << " -> " << name(e.child) << "  w=" << e.weight;
     auto sh = og.shared_points(e.parent, e.child);
@@ -475,7 +477,7 @@ int analyze(const Options& o)
     std::cout << "\n";
   }
   if (t.ties > 1)
-    std::cout << "  " << t.ties << " rooted trees tie on weight and depth sum" << (t.ties_complete ? "" : " (at least)")
+    std::cout << "  " << t.ties << " rooted trees tie on weight, distance paths and depth sum" << (t.ties_complete ? "" : " (at least)")
               << "; the tie-break prefers bodies with the user's coordinates, then the order of the bodies\n";
   std::cout << "  search: " << t.strategy << "\n";
   std::cout << "\nwell-formed incidences of the tree's bodies: " << wf.incidences.size() << " (" << wf.tree_count

@@ -605,7 +605,8 @@ int solve(const RI::Scene& scene, const RI::Rigid_body_collection<Traits>& input
                   {"boxes", st.boxes}, {"krawczyk_tests", st.krawczyk_tests}, {"roots", st.roots},
                   {"duplicates_merged", st.duplicates}, {"spurious_rejected", st.spurious}, {"curve_boxes", st.curve_boxes},
                   {"placements_excluded", st.placements_excluded},
-                  {"planned_systems", st.planned_systems}, {"block_solves", st.block_solves}, {"excluded_by_plan", st.excluded_by_plan}, {"excluded_by_propagation", st.excluded_by_propagation},
+                  {"planned_systems", st.planned_systems}, {"block_solves", st.block_solves},
+                  {"block_solves_reused", st.block_solves_reused}, {"excluded_by_plan", st.excluded_by_plan}, {"excluded_by_propagation", st.excluded_by_propagation},
                   {"swept", st.swept},
                   {"coefficient_width", st.coefficient_width}, {"threads", st.threads},
                   {"seconds", {{"analysis", analysis_seconds}, {"reduce", st.reduce_seconds}, {"solve", st.solve_seconds},
@@ -699,7 +700,9 @@ int solve(const RI::Scene& scene, const RI::Rigid_body_collection<Traits>& input
             << (st.excluded_by_propagation ? ", " + std::to_string(st.excluded_by_propagation) + " chart combinations never built (excluded by propagation along the tree)" : std::string())
             << (st.swept ? std::string(", solved along the tree by a sweep (no chart combination built)") : std::string())
             << (st.planned_systems ? ", " + std::to_string(st.planned_systems) + " systems solved along their solution plan (" +
-                                         std::to_string(st.block_solves) + " block solves, " + std::to_string(st.excluded_by_plan) +
+                                         std::to_string(st.block_solves) + " block solves, " +
+                                         (st.block_solves_reused ? std::to_string(st.block_solves_reused) + " reused (independent parts), " : std::string()) +
+                                         std::to_string(st.excluded_by_plan) +
                                          " combinations excluded by a block without roots)"
                                    : std::string())
             << "; seconds: analysis " << analysis_seconds << ", reduce "

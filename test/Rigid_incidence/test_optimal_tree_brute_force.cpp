@@ -94,6 +94,7 @@ std::string to_string(const Key& k)
 struct Oracle
 {
   long weight = std::numeric_limits<long>::max();
+  long path_sum = std::numeric_limits<long>::max();
   long depth_sum = std::numeric_limits<long>::max();
   std::size_t ties = 0;
   Key best;                  // smallest tie-break key among the tied optima
@@ -120,6 +121,8 @@ std::vector<std::vector<int>> pair_weights(const Body_points& b)
 // The points a distance names (set by points_of() for the collection at hand): the tree must
 // cover them as well as the shared points, since a distance is an equation between them.
 static std::set<std::size_t> named_by_distances;
+// The distances' pairs of points, for the second criterion (the tree edges between them).
+static std::vector<std::pair<std::size_t, std::size_t>> distance_pairs;
 
 // Per point to cover (shared, or named by a distance): the bodies through it.
 std::vector<std::vector<std::size_t>> shared_point_bodies(const Body_points& b)
@@ -160,9 +163,30 @@ Oracle brute_force(const Body_points& bodies, const std::vector<bool>& implied)
       long wt = 0;
       for (const auto& x : e) wt += w[v[x.first]][v[x.second]];
       if (wt > o.weight) return;
-      if (wt < o.weight) { o.weight = wt; o.depth_sum = std::numeric_limits<long>::max(); o.ties = 0; }
+      if (wt < o.weight) { o.weight = wt; o.path_sum = o.depth_sum = std::numeric_limits<long>::max(); o.ties = 0; }
       std::vector<std::vector<std::size_t>> adj(k);
       for (const auto& x : e) { adj[x.first].push_back(x.second); adj[x.second].push_back(x.first); }
+      // second criterion: per distance the fewest tree edges between a body through each of
+      // its points (breadth-first search from every body: all distances in the tree)
+      std::vector<std::vector<long>> hops(k, std::vector<long>(k, -1));
+      for (std::size_t r = 0; r < k; ++r) {
+        std::vector<std::size_t> queue{r};
+        hops[r][r] = 0;
+        for (std::size_t q = 0; q < queue.size(); ++q)
+          for (std::size_t u : adj[queue[q]])
+            if (hops[r][u] < 0) { hops[r][u] = hops[r][queue[q]] + 1; queue.push_back(u); }
+      }
+      auto holds = [&](std::size_t i, std::size_t p) { return std::find(bodies[v[i]].begin(), bodies[v[i]].end(), p) != bodies[v[i]].end(); };
+      long ps = 0;
+      for (const auto& d : distance_pairs) {
+        long fewest = -1;
+        for (std::size_t i = 0; i < k; ++i)
+          for (std::size_t j = 0; j < k; ++j)
+            if (holds(i, d.first) && holds(j, d.second) && (fewest < 0 || hops[i][j] < fewest)) fewest = hops[i][j];
+        if (fewest >= 0) ps += fewest;
+      }
+      if (ps > o.path_sum) return;
+      if (ps < o.path_sum) { o.path_sum = ps; o.depth_sum = std::numeric_limits<long>::max(); o.ties = 0; }
       std::vector<std::pair<std::size_t, std::size_t>> body_edges;
       for (const auto& x : e) body_edges.push_back(std::minmax(v[x.first], v[x.second]));
       std::sort(body_edges.begin(), body_edges.end());
@@ -221,7 +245,12 @@ Body_points points_of(const RI::Rigid_body_collection<Traits>& c)
   Body_points b;
   for (std::size_t i = 0; i < c.number_of_bodies(); ++i) b.push_back(c.body(i).points);
   named_by_distances.clear();
-  for (const auto& d : c.distances()) { named_by_distances.insert(d.a); named_by_distances.insert(d.b); }
+  distance_pairs.clear();
+  for (const auto& d : c.distances()) {
+    named_by_distances.insert(d.a);
+    named_by_distances.insert(d.b);
+    distance_pairs.push_back({d.a, d.b});
+  }
   return b;
 }
 
@@ -342,6 +371,7 @@ void check_against_oracle(const RI::Rigid_body_collection<Traits>& c, const Orac
     return;
   }
   CHECK(t.weight == o.weight, name << ": weight " << t.weight << ", oracle " << o.weight);
+  CHECK(t.distance_path_sum == o.path_sum, name << ": distance paths " << t.distance_path_sum << ", oracle " << o.path_sum);
   CHECK(t.depth_sum == o.depth_sum, name << ": depth sum " << t.depth_sum << ", oracle " << o.depth_sum);
   CHECK(t.ties == o.ties, name << ": ties " << t.ties << ", oracle " << o.ties);
   CHECK(t.proven_optimal, name << ": not proven optimal (" << t.strategy << ")");
@@ -390,9 +420,9 @@ void check_budgets(const RI::Rigid_body_collection<Traits>& c, const Oracle& o, 
     if (b.opt.exact_limit == 0)
       CHECK(!t.proven_optimal, nm.str() << ": the heuristic claims a proven optimum");
     if (t.proven_optimal) {
-      CHECK(t.weight == o.weight && t.depth_sum == o.depth_sum,
-            nm.str() << ": proven_optimal, but weight " << t.weight << ", depth sum " << t.depth_sum << "; oracle "
-                     << o.weight << ", " << o.depth_sum);
+      CHECK(t.weight == o.weight && t.distance_path_sum == o.path_sum && t.depth_sum == o.depth_sum,
+            nm.str() << ": proven_optimal, but weight " << t.weight << ", distance paths " << t.distance_path_sum
+                     << ", depth sum " << t.depth_sum << "; oracle " << o.weight << ", " << o.path_sum << ", " << o.depth_sum);
       if (t.ties_complete)
         CHECK(t.ties == o.ties, nm.str() << ": proven_optimal and ties_complete, but ties " << t.ties << " ("
                                          << t.trees_examined << " trees examined); oracle " << o.ties);
@@ -426,10 +456,20 @@ void random_cases(unsigned seed0, int count)
     g.s.implied.assign(g.s.bodies.size(), false);
     if (k % 2 == 1)
       for (std::size_t i = 0; i < g.s.bodies.size(); ++i) g.s.implied[i] = rng.get_double() < 0.35;
+    // every third case: 1 to 3 distances between points of two different bodies (the second
+    // criterion, the tree edges between each distance's bodies)
+    if (k % 3 == 2)
+      for (int d = rng.get_int(1, 4); d > 0; --d) {
+        const std::size_t a = std::size_t(rng.get_int(0, int(g.s.bodies.size())));
+        const std::size_t b = (a + 1 + std::size_t(rng.get_int(0, int(g.s.bodies.size()) - 1))) % g.s.bodies.size();
+        const int p = g.s.bodies[a][std::size_t(rng.get_int(0, int(g.s.bodies[a].size())))];
+        const int q = g.s.bodies[b][std::size_t(rng.get_int(0, int(g.s.bodies[b].size())))];
+        if (p != q) g.s.distances.push_back({p, q});
+      }
     ++per_shape[shapes[which]];
     std::ostringstream name;
     name << "random case " << k << " (seed " << seed << ", " << g.s.shape << ", " << g.s.bodies.size() << " bodies"
-         << (k % 2 ? ", some implied" : "") << ")";
+         << (k % 2 ? ", some implied" : "") << ", " << g.s.distances.size() << " distances)";
     auto ce = build<Exact_traits>(g.s);
     auto ci = build<Epick_traits>(g.s);
     Oracle o = timed_oracle(points_of(ce), implied_of(ce));
@@ -589,6 +629,29 @@ void hand_made(const std::string& kernel)
   variant = 6; // -> max_trees = 1
   run("diamond of pairs with leaves", {{1, 2, 3, 4, 11}, {1, 2, 5, 6, 7, 8, 12}, {3, 4, 5, 6, 9, 10, 13}, {7, 8, 9, 10, 14},
                                        {11, 21, 31}, {12, 22, 32}, {13, 23, 33}, {14, 24, 34}}, {}, 3, 3, 2);
+  // Stacked plates: four bodies sharing nothing, each held by three distances to the one
+  // below. Every spanning tree weighs 18; the distances span the fewest tree edges (9) on
+  // the path b0-b1-b2-b3 alone, rooted at b1 or b2 (depth sum 4), where the paper's depth
+  // sum alone would take a star (depth sum 3, distances across two edges).
+  {
+    Structure s;
+    for (int p = 0; p < 12; ++p) s.coords.push_back({p, p * p, p * p * p});
+    s.bodies = {{0, 1, 2}, {3, 4, 5}, {6, 7, 8}, {9, 10, 11}};
+    s.implied.assign(4, false);
+    for (int k = 0; k < 3; ++k)
+      for (int j = 0; j < 3; ++j) s.distances.push_back({3 * k + j, 3 * (k + 1) + (j + 1) % 3});
+    auto c = build<Traits>(s);
+    Oracle o = timed_oracle(points_of(c), implied_of(c));
+    CHECK(o.weight == 18 && o.path_sum == 9 && o.depth_sum == 4 && o.ties == 2,
+          "stacked plates: oracle gives weight " << o.weight << ", distance paths " << o.path_sum << ", depth sum "
+                                                 << o.depth_sum << ", ties " << o.ties << "; by hand 18, 9, 4, 2");
+    check_against_oracle(c, o, "stacked plates [" + kernel + "]");
+    RI::Incidence_tree t = RI::optimal_incidence_tree(c);
+    CHECK(t.edges.size() == 3 && t.root == 1, "stacked plates: root " << t.root << ", expected b1");
+    for (const auto& e : t.edges)
+      CHECK(e.parent + 1 == e.child || e.child + 1 == e.parent,
+            "stacked plates: tree edge " << e.parent << "-" << e.child << " joins plates that are not stacked");
+  }
 }
 
 // ===================================================================== larger collections

@@ -225,13 +225,30 @@ static void along_the_plan()
 #endif
   }
   {
+    // the optimal tree is the path of plates (the second criterion, distance paths): each
+    // plate's legs involve its own 6 variables, two independent parts, each solved once per
+    // chart of its own rotation (4 + 4 block solves, the second part's roots reused on every
+    // branch of the first's)
+    CHECK(full.work.independent_parts == 2, "two platforms: " << full.work.independent_parts << " independent parts, expected 2");
+    CHECK(full.result.statistics.block_solves == 8 && full.result.statistics.block_solves_reused > 0,
+          "two platforms: " << full.result.statistics.block_solves << " block solves, " << full.result.statistics.block_solves_reused
+                            << " reused; expected 8, and reuses");
+    // the paper's criterion alone (depth sum) takes the star on plate 0, where the legs between
+    // plates 1 and 2 are equations in both plates' variables: one part, and the whole system of
+    // 12 variables is refused for its dense arrays (what the plan avoids)
+    RI::Rigid_body_collection<Traits> c = RI::standardize(RI::make_collection<Traits>(platforms));
+    const RI::Incidence_tree star = RI::make_incidence_tree(c, 0, {{0, 1}, {0, 2}});
+    const RI::Well_formed_selection wf = RI::select_well_formed_incidences(c, star);
+    CHECK(RI::scene_solve_work(c, star, wf).independent_parts == 1, "two platforms, star: one part");
     bool refused = false;
+    RI::Scene_solve_parameters p;
+    p.solve_with_plan = false;
     try {
-      solve(platforms, false);
+      RI::solve_scene<CGAL::Interval_nt<false>, CGAL::Gmpq>(RI::make_collection<Traits>(platforms), c, star, wf, p);
     } catch (const std::exception& e) {
       refused = std::string(e.what()).find("dense") != std::string::npos;
     }
-    CHECK(refused, "two platforms, whole: refused for its dense arrays (what the plan avoids)");
+    CHECK(refused, "two platforms, star tree, whole: refused for its dense arrays (what the plan avoids)");
   }
   {
     const Outcome cut = solve(platforms, true, 0.3);

@@ -423,6 +423,7 @@ private:
     if (cb.empty()) cb.push_back(npos);
     bool have = false;
     Reduced_equation<NT> best;
+    std::pair<std::size_t, unsigned> best_size;
     for (std::size_t a : ca)
       for (std::size_t b : cb) {
         auto r = p_->squared_distance_of_points(a, k.a, b, k.b);
@@ -433,13 +434,34 @@ private:
         Polynomial f = r.num - d2 * den;
         std::size_t frame = (a == npos || b == npos) ? tree_.root : p_->lowest_common_ancestor(a, b);
         Reduced_equation<NT> e = finish(k, f, frame, &r.den);
-        if (!have || e.variables.size() < best.variables.size() ||
-            (e.variables.size() == best.variables.size() && e.total_degree < best.total_degree)) {
+        const std::pair<std::size_t, unsigned> size = certain_size(e.polynomial);
+        if (!have || size < best_size) {
           best = e;
+          best_size = size;
           have = true;
         }
       }
     return best;
+  }
+
+  // The variables and the total degree of the terms whose coefficients are certainly not 0:
+  // with interval coefficients, terms that cancel exactly stay as enclosures of 0, and choosing
+  // the carriers of a distance by the whole support would choose other carriers than the exact
+  // system does (another equation of the same solutions, not an enclosure of the exact one)
+  static std::pair<std::size_t, unsigned> certain_size(const Polynomial& f)
+  {
+    std::vector<char> used(f.number_of_variables(), 0);
+    unsigned total = 0;
+    for (const auto& t : f.terms()) {
+      if (may_be_zero(t.second)) continue;
+      unsigned d = 0;
+      for (std::size_t v = 0; v < t.first.size(); ++v) {
+        d += t.first[v];
+        if (t.first[v] > 0) used[v] = 1;
+      }
+      total = (std::max)(total, d);
+    }
+    return {std::size_t(std::count(used.begin(), used.end(), char(1))), total};
   }
 
   // A translation T (edge sharing nothing) enters a distance from its child as
@@ -468,6 +490,9 @@ private:
           if (d > 2) return false;
           if (d < 2) continue;
           const int i = square_of(t.first);
+          // (a product T_i T_j: its coefficient cancels exactly where the translation enters
+          // through a rotation, to an enclosure of 0 with interval coefficients, kept)
+          if (i < 0 && may_be_zero(t.second)) continue;
           if (i < 0) return false;
           Exponent e = t.first;
           e[T[std::size_t(i)]] = 0;
@@ -478,11 +503,27 @@ private:
       // the same coefficients (interval coefficients: the same bounds; the three squares come
       // from one computation, and soundness does not depend on it: p - mu S is a valid
       // replacement for any mu, this only decides whether it is worth it)
+      // (interval coefficients: bounds that meet, a term of one absent from the other an
+      // enclosure of 0, as the exact coefficients they enclose are equal; the exact system
+      // then linearizes the same equations)
       auto same = [](const Polynomial& a, const Polynomial& b) {
-        if (a.terms().size() != b.terms().size()) return false;
-        for (auto i = a.terms().begin(), j = b.terms().begin(); i != a.terms().end(); ++i, ++j)
-          if (i->first != j->first || !same_bounds(i->second, j->second)) return false;
-        return true;
+        if constexpr (internal::Coefficient_ops<NT>::is_interval) {
+          typename CGAL::Interval_traits<NT>::Lower lower;
+          typename CGAL::Interval_traits<NT>::Upper upper;
+          for (const auto& t : a.terms()) {
+            auto j = b.terms().find(t.first);
+            if (j == b.terms().end() ? !may_be_zero(t.second) : (upper(t.second) < lower(j->second) || upper(j->second) < lower(t.second)))
+              return false;
+          }
+          for (const auto& t : b.terms())
+            if (!a.terms().count(t.first) && !may_be_zero(t.second)) return false;
+          return true;
+        } else {
+          if (a.terms().size() != b.terms().size()) return false;
+          for (auto i = a.terms().begin(), j = b.terms().begin(); i != a.terms().end(); ++i, ++j)
+            if (i->first != j->first || !same_bounds(i->second, j->second)) return false;
+          return true;
+        }
       };
       // the sphere: T only, k (T_x^2 + T_y^2 + T_z^2) + lower terms, k a number known exactly
       std::size_t sphere = equations_.size();
@@ -513,6 +554,18 @@ private:
                   " x (" + equations_[sphere].label + "): linear in " + p_->variable_names()[T[0]].substr(0, p_->variable_names()[T[0]].size() - 1);
         equations_[i] = std::move(e);
       }
+    }
+  }
+
+  // an enclosure of 0 (interval coefficients), or 0
+  static bool may_be_zero(const NT& a)
+  {
+    if constexpr (internal::Coefficient_ops<NT>::is_interval) {
+      typename CGAL::Interval_traits<NT>::Lower lower;
+      typename CGAL::Interval_traits<NT>::Upper upper;
+      return !(lower(a) > 0) && !(upper(a) < 0);
+    } else {
+      return a == NT(0);
     }
   }
 

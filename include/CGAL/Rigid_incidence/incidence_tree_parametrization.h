@@ -346,19 +346,12 @@ public:
   /// of `ancestor`, as three rational functions.
   std::array<Rational, 3> position(std::size_t b, const Point& y, std::size_t ancestor) const
   {
-    Guard guard;
-    std::array<Rational, 3> X;
-    for (int i = 0; i < 3; ++i) X[std::size_t(i)] = constant(y[std::size_t(i)]);
-    for (std::size_t x = b; x != ancestor; x = parent_of(x)) {
-      if (x == npos) throw Input_error("incidence tree parametrization: not an ancestor");
-      X = apply(edge_of_child_[x], X);
-    }
-    return X;
+    return position(b, y, ancestor, npos);
   }
   /// The position of point `p` of body `b` in the frame of `ancestor`.
   std::array<Rational, 3> position(std::size_t b, std::size_t p, std::size_t ancestor) const
   {
-    return position(b, local_point(b, p), ancestor);
+    return position(b, local_point(b, p), ancestor, p);
   }
 
   /// The squared distance between local point `ya` of body `a` and local point `yb` of body
@@ -646,6 +639,27 @@ private:
   Rational poly(const Polynomial& p) const { return Rational{p, {}}; }
 
   // Y in the child's frame of edge k -> o + M (Y - s) / D in the parent's
+  // `point`: the global index of the point at `y`, or npos. The pivot of b's own edge lands at
+  // the edge's translation whatever the rotation: told by its index, not by comparing its
+  // coordinates with the pivot's (interval coordinates of an implied body are not certainly
+  // equal to themselves, and the rotation and its denominator would enter for nothing)
+  std::array<Rational, 3> position(std::size_t b, const Point& y, std::size_t ancestor, std::size_t point) const
+  {
+    Guard guard;
+    std::array<Rational, 3> X;
+    std::size_t x = b;
+    if (point != npos && b != ancestor && b != npos && edge_of_child_[b] != npos && edges_[edge_of_child_[b]].pivot == point) {
+      for (int i = 0; i < 3; ++i) X[std::size_t(i)] = poly(o_[edge_of_child_[b]][std::size_t(i)]);
+      x = parent_of(b);
+    } else {
+      for (int i = 0; i < 3; ++i) X[std::size_t(i)] = constant(y[std::size_t(i)]);
+    }
+    for (; x != ancestor; x = parent_of(x)) {
+      if (x == npos) throw Input_error("incidence tree parametrization: not an ancestor");
+      X = apply(edge_of_child_[x], X);
+    }
+    return X;
+  }
   std::array<Rational, 3> apply(std::size_t k, const std::array<Rational, 3>& Y) const
   {
     std::array<Rational, 3> Z;
@@ -698,7 +712,7 @@ private:
     std::size_t top = s.body;
     while (parent_of(top) != L) top = parent_of(top);
     const std::size_t k = edge_of_child_[top];
-    std::array<Rational, 3> Y = position(s.body, s.y, top), Z;
+    std::array<Rational, 3> Y = position(s.body, s.y, top, s.point), Z;
     const bool at_pivot = s.body == top && s.point != npos && s.point == edges_[k].pivot;
     for (int i = 0; i < 3; ++i)
       Z[std::size_t(i)] = at_pivot ? Rational{Polynomial(names_.size()), {}} : sub(Y[std::size_t(i)], constant(s_[k][std::size_t(i)]));

@@ -3,8 +3,9 @@
 //
 // The optimal incidence tree (Section 4.1, Part 1 of
 // optimized_incidence_tree_parametrization.txt): over all covering sets, a minimum-weight
-// spanning tree of the induced overlap graph; among those, the tree and root of minimum
-// depth sum.
+// spanning tree of the induced overlap graph; among those, the tree whose distances span the
+// fewest tree edges (our addition: equations are written in the frame of the lowest common
+// ancestor, not the root's), then the tree and root of minimum depth sum.
 
 #ifndef CGAL_RIGID_INCIDENCE_OPTIMAL_INCIDENCE_TREE_H
 #define CGAL_RIGID_INCIDENCE_OPTIMAL_INCIDENCE_TREE_H
@@ -18,6 +19,7 @@
 #include <boost/graph/connected_components.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <limits>
 #include <string>
@@ -46,10 +48,13 @@ struct Incidence_tree
   std::vector<Edge> edges;                ///< breadth-first from the root: a parent before its children
   long weight = 0;                        ///< total edge weight = number of variables of the reduced system
   long depth_sum = 0;                     ///< sum over the tree's bodies of their depth (the root has depth 0)
+  /// Sum over the collection's distances of the tree edges between their two points' bodies
+  /// (the fewest over the bodies holding each point): the variables of the distance equations.
+  long distance_path_sum = 0;
   std::vector<std::size_t> parent;        ///< per body: its parent, npos for the root and non-covering bodies
   std::vector<int> depth;                 ///< per body: its depth, -1 for non-covering bodies
 
-  std::size_t ties = 1;          ///< rooted trees attaining both minima; the tie-break picks one
+  std::size_t ties = 1;          ///< rooted trees attaining the three minima (weight, distance paths, depth sum); the tie-break picks one
   bool ties_complete = true;     ///< false if the tie count was capped
   bool proven_optimal = true;    ///< false if a search budget ran out or the heuristic was used
   std::string strategy;          ///< how the tree was found, for reports
@@ -66,7 +71,7 @@ struct Incidence_tree_options
   std::size_t exact_limit = 64;
   /// Nodes of the covering-set search before it stops with the best found.
   std::size_t max_search_nodes = 20000000;
-  /// Minimum spanning trees enumerated for the depth-sum criterion.
+  /// Minimum spanning trees enumerated for the distance-path and depth-sum criteria.
   std::size_t max_trees = 2000000;
   /// Optimal covering sets kept for the second criterion.
   std::size_t max_candidates = 100000;
@@ -159,6 +164,14 @@ public:
     }
     implied_.resize(n_);
     for (std::size_t i = 0; i < n_; ++i) implied_[i] = !c.body(i).all_coordinates();
+    for (const auto& d : c.distances()) {
+      std::array<std::vector<std::size_t>, 2> ends;
+      for (std::size_t i = 0; i < n_; ++i) {
+        if (c.body(i).contains(d.a)) ends[0].push_back(i);
+        if (c.body(i).contains(d.b)) ends[1].push_back(i);
+      }
+      distance_bodies_.push_back(ends);
+    }
   }
 
   Incidence_tree run()
@@ -174,7 +187,7 @@ public:
       best_w_ = greedy_w;
       t.proven_optimal = false;
       t.strategy = "heuristic (more than " + std::to_string(std::min<std::size_t>(opt_.exact_limit, 64)) +
-                   " bodies): greedy covering set, then the minimum-depth-sum minimum spanning tree; not proven optimal";
+                   " bodies): greedy covering set, then the minimum spanning tree of fewest distance paths and least depth sum; not proven optimal";
     }
     choose_tree(t);
     return t;
@@ -187,6 +200,7 @@ private:
   std::size_t n_;
   std::vector<std::vector<std::size_t>> cover_; // per point to cover: the bodies through it
   std::vector<bool> implied_;
+  std::vector<std::array<std::vector<std::size_t>, 2>> distance_bodies_; // per distance: the bodies through each point
   std::vector<std::vector<std::size_t>> candidates_;
   long best_w_ = std::numeric_limits<long>::max();
   bool candidates_capped_ = false;
@@ -314,16 +328,49 @@ private:
     dfs(k + 1, in, without);
   }
 
-  // ------------------------------------------------- second criterion: depth sum
+  // ------------------------- second and third criteria: distance paths, then depth sum
   struct Best
   {
     bool set = false;
+    long path_sum = 0;
     long depth_sum = 0;
     std::tuple<long, int, std::vector<std::size_t>, std::size_t, std::vector<std::pair<std::size_t, std::size_t>>> key;
     std::vector<std::size_t> set_bodies;
     std::size_t root = 0;
     std::vector<std::pair<std::size_t, std::size_t>> edges; // body indices
   };
+
+  // Sum over the distances of the tree edges between the two points' bodies, the fewest over
+  // the bodies of `s` (local indices in `ends`) holding each point. A distance equation is
+  // written in the frame of the two bodies' lowest common ancestor, so these edges' variables
+  // are the equation's (Reduced_system picks the same pair of bodies).
+  static long distance_paths(std::size_t m, const std::vector<std::vector<std::size_t>>& adj,
+                             const std::vector<std::array<std::vector<std::size_t>, 2>>& ends)
+  {
+    if (ends.empty()) return 0;
+    std::vector<std::size_t> par(m, std::size_t(-1)), queue{0};
+    std::vector<long> dep(m, -1);
+    dep[0] = 0;
+    for (std::size_t k = 0; k < queue.size(); ++k)
+      for (std::size_t v : adj[queue[k]])
+        if (dep[v] < 0) { dep[v] = dep[queue[k]] + 1; par[v] = queue[k]; queue.push_back(v); }
+    auto path = [&](std::size_t a, std::size_t b) {
+      long len = 0;
+      while (a != b) {
+        if (dep[a] < dep[b]) std::swap(a, b);
+        a = par[a];
+        ++len;
+      }
+      return len;
+    };
+    long sum = 0;
+    for (const auto& e : ends) {
+      long best = std::numeric_limits<long>::max();
+      for (std::size_t a : e[0]) for (std::size_t b : e[1]) best = std::min(best, path(a, b));
+      if (best != std::numeric_limits<long>::max()) sum += best;
+    }
+    return sum;
+  }
 
   void choose_tree(Incidence_tree& t)
   {
@@ -332,11 +379,22 @@ private:
     bool capped = candidates_capped_;
     for (const auto& s : candidates_) {
       if (trees > opt_.max_trees) { capped = true; break; }
+      std::vector<std::size_t> local(n_, std::size_t(-1));
+      for (std::size_t i = 0; i < s.size(); ++i) local[s[i]] = i;
+      std::vector<std::array<std::vector<std::size_t>, 2>> ends;
+      for (const auto& d : distance_bodies_) {
+        std::array<std::vector<std::size_t>, 2> e;
+        for (int k = 0; k < 2; ++k)
+          for (std::size_t b : d[k]) if (local[b] != std::size_t(-1)) e[k].push_back(local[b]);
+        if (!e[0].empty() && !e[1].empty()) ends.push_back(e);
+      }
       enumerate_msts(s, [&](const std::vector<std::pair<std::size_t, std::size_t>>& tree_edges) {
         ++trees;
         std::size_t m = s.size();
         std::vector<std::vector<std::size_t>> adj(m);
         for (const auto& e : tree_edges) { adj[e.first].push_back(e.second); adj[e.second].push_back(e.first); }
+        const long P = distance_paths(m, adj, ends);
+        if (best.set && P > best.path_sum) return trees <= opt_.max_trees;
         std::vector<long> D = depth_sums_all_roots(m, adj);
         long implied_count = 0;
         for (std::size_t b : s) implied_count += implied_[b] ? 1 : 0;
@@ -345,12 +403,13 @@ private:
           body_edges.push_back(std::minmax(s[e.first], s[e.second]));
         std::sort(body_edges.begin(), body_edges.end());
         for (std::size_t r = 0; r < m; ++r) {
-          if (best.set && D[r] > best.depth_sum) continue;
-          if (!best.set || D[r] < best.depth_sum) { ties = 0; }
+          const bool better = !best.set || P < best.path_sum || D[r] < best.depth_sum;
+          if (!better && D[r] > best.depth_sum) continue;
+          if (better) ties = 0;
           ++ties;
           auto key = std::make_tuple(implied_count, implied_[s[r]] ? 1 : 0, s, s[r], body_edges);
-          if (!best.set || D[r] < best.depth_sum || key < best.key) {
-            best.set = true; best.depth_sum = D[r]; best.key = key;
+          if (better || key < best.key) {
+            best.set = true; best.path_sum = P; best.depth_sum = D[r]; best.key = key;
             best.set_bodies = s; best.root = s[r]; best.edges = body_edges;
           }
         }
@@ -359,11 +418,12 @@ private:
     }
     if (trees > opt_.max_trees) capped = true; // the last candidate's enumeration may have stopped too
     if (capped) { t.ties_complete = false; t.proven_optimal = false;
-      t.strategy += "; the tie and depth-sum enumeration was capped: not proven optimal on the depth sum"; }
+      t.strategy += "; the enumeration of trees for the distance paths and depth sum was capped: not proven optimal on them"; }
     t.trees_examined = trees;
     t.ties = ties;
     t.weight = best_w_;
     t.depth_sum = best.depth_sum;
+    t.distance_path_sum = best.path_sum;
     t.covering_set = best.set_bodies;
     t.root = best.root;
     t.parent.assign(n_, Incidence_tree::npos);
@@ -404,6 +464,26 @@ private:
         int w = og_.weight(s[a], s[b]);
         classes[w == 1 ? 0 : (w == 3 ? 1 : 2)].push_back({a, b});
       }
+    // pairs joined by more distances first: the first trees enumerated are those of few
+    // distance paths, which matters when max_trees cuts the enumeration (n bodies sharing
+    // nothing have n^(n-2) spanning trees)
+    if (!distance_bodies_.empty()) {
+      auto links = [&](const std::pair<std::size_t, std::size_t>& e) {
+        long k = 0;
+        for (const auto& d : distance_bodies_) {
+          const bool a0 = std::binary_search(d[0].begin(), d[0].end(), s[e.first]), a1 = std::binary_search(d[1].begin(), d[1].end(), s[e.first]);
+          const bool b0 = std::binary_search(d[0].begin(), d[0].end(), s[e.second]), b1 = std::binary_search(d[1].begin(), d[1].end(), s[e.second]);
+          k += (a0 && b1) || (a1 && b0) ? 1 : 0;
+        }
+        return k;
+      };
+      for (auto& cls : classes) {
+        std::vector<std::pair<long, std::pair<std::size_t, std::size_t>>> keyed;
+        for (const auto& e : cls) keyed.push_back({-links(e), e});
+        std::stable_sort(keyed.begin(), keyed.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+        for (std::size_t i = 0; i < cls.size(); ++i) cls[i] = keyed[i].second;
+      }
+    }
     std::vector<std::size_t> uf(m);
     for (std::size_t i = 0; i < m; ++i) uf[i] = i;
     std::vector<std::pair<std::size_t, std::size_t>> chosen;
@@ -468,11 +548,19 @@ First criterion: over all covering sets S of the shared points and of the points
 distances name (`Rigid_body_collection::points_to_cover()`: a distance is an equation between
 points the tree must place), the minimum total weight
 of a spanning tree of the overlap graph induced by S (weights w(2)=1, w(1)=3, w(0)=6).
-Second: over all minimum spanning trees of all optimal covering sets and all their roots,
-the minimum sum of depths. Remaining ties are broken, in this order, by fewer implied
+Second (not in the paper): over all minimum spanning trees of all optimal covering sets, the
+minimum `Incidence_tree::distance_path_sum`, the tree edges between the bodies of each
+distance's two points. The paper writes every equation in the root's frame, where a body's
+depth makes its degree; `Reduced_system` writes each in the frame of the lowest common ancestor
+of its bodies, where the edges between them are its variables. Stacked platforms, all pairs of
+plates of weight 6, show the difference: the star (depth sum 3 for three plates on a base)
+makes the legs between plates 1 and 2 equations in both plates' variables, the path (depth sum
+6) makes every plate's legs equations in its own 6 variables, and the reduced system falls into
+independent parts. Third: over those trees and all their roots, the minimum sum of depths.
+Remaining ties are broken, in this order, by fewer implied
 bodies in the covering set (their coordinates need square roots), a root that is not
 implied, the smaller sorted list of body indices, the smaller root index, the smaller
-sorted edge list; `Incidence_tree::ties` counts the rooted trees that tie on both criteria.
+sorted edge list; `Incidence_tree::ties` counts the rooted trees that tie on the three criteria.
 
 Strategy. Up to `options.exact_limit` bodies (at most 64), an exact branch and bound over
 covering sets: a body is in or out in index order; a branch is cut when a point can no longer

@@ -253,6 +253,10 @@ struct Scene_solve_statistics
   /// the block solves those took (a block once per combination of the roots before it, and
   /// per chart of its own hinges)
   std::size_t block_solves = 0;
+  /// block solves reused, not run again: a block no earlier value enters (an independent part
+  /// of the reduced system) is solved once per chart of its own edges
+  /// (`Plan_result::block_solves_reused`)
+  std::size_t block_solves_reused = 0;
   /// chart combinations never built: solved along the plan over the charts
   /// (`solve_with_plan_over_charts()`), a block before their last had no root in its charts
   std::size_t excluded_by_plan = 0;
@@ -1420,7 +1424,7 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
     Solver_result<IT> res;
     double reduce_seconds = 0, solve_seconds = 0;
     bool planned = false;
-    std::size_t block_solves = 0, plan_boxes = 0, plan_krawczyk_tests = 0;
+    std::size_t block_solves = 0, block_solves_reused = 0, plan_boxes = 0, plan_krawczyk_tests = 0;
   };
   // one combination's solve, its system built (w.r, w.sys, w.reduce_seconds): on any thread
   auto solve_combination = [&](Combination_work& w) {
@@ -1455,6 +1459,7 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
               planned = true;
               w.planned = true;
               w.block_solves = pr.block_solves;
+              w.block_solves_reused = pr.block_solves_reused;
             } else {
               // the whole system's solve diagnoses, and traces, what a block could not
               w.plan_boxes = pr.boxes;
@@ -1481,6 +1486,7 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
     if (w.planned) {
       ++st.planned_systems;
       st.block_solves += w.block_solves;
+      st.block_solves_reused += w.block_solves_reused;
     }
     st.boxes += w.plan_boxes;
     st.krawczyk_tests += w.plan_krawczyk_tests;
@@ -1754,6 +1760,7 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
               st.chart_combinations += per_placement;
               st.planned_systems += per_placement;
               st.block_solves += pc->totals.block_solves;
+              st.block_solves_reused += pc->totals.block_solves_reused;
               st.excluded_by_plan += per_placement - pc->found.size();
               auto t3 = Clock::now();
               for (auto& f : pc->found) {

@@ -22,6 +22,7 @@
 #include <chrono>
 #include <functional>
 #include <memory>
+#include <mutex>
 #include <map>
 #include <optional>
 #include <stdexcept>
@@ -72,6 +73,10 @@ struct Plan_result
   std::vector<Plan_unresolved<IT>> unresolved;  ///< what a block left undecided
   std::string diagnosis;               ///< the first block diagnosis met, if any
   std::size_t block_solves = 0;        ///< sub-systems solved (a block once per combination of the roots before it)
+  /// block solves not run again: a block no earlier value enters (an independent part) is
+  /// solved once per assignment of its own charts, its roots reused for every combination of
+  /// the roots before it
+  std::size_t block_solves_reused = 0;
   std::size_t boxes = 0;               ///< boxes over all block solves
   std::size_t krawczyk_tests = 0;      ///< Krawczyk tests over all block solves
   std::size_t refinements = 0;         ///< roots tightened on the whole system
@@ -167,6 +172,22 @@ template <class IT, class NT> struct Plan_run
   // refine() refused the whole system (too large for its dense arrays: the same for every root
   // and chart): not tried again, by any branch
   std::shared_ptr<std::atomic<bool>> whole_too_large = std::make_shared<std::atomic<bool>>(false);
+  // A block no earlier value enters (an independent part of the system, such as the next
+  // plate of stacked platforms written in its own parent's frame) has the same system on every
+  // branch: it is solved once per assignment of its own charts and its result reused (issue
+  // 28, item 1: the parts' work adds up instead of multiplying). Shared by all branches.
+  struct Own_solve
+  {
+    std::once_flag once;
+    Polynomial_system<NT> system;  // the block's system it was solved for (checked on reuse)
+    Solver_result<IT> result;
+  };
+  struct Own_solves
+  {
+    std::mutex lock;
+    std::map<std::pair<std::size_t, std::vector<int>>, std::shared_ptr<Own_solve>> by_block_and_charts;
+  };
+  std::shared_ptr<Own_solves> own_solves = std::make_shared<Own_solves>();
 
   const std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
   Plan_run(const Plan_run&) = delete;
@@ -179,7 +200,8 @@ template <class IT, class NT> struct Plan_run
   struct Branch_tag {};
   Plan_run(const Plan_run& o, Branch_tag)
       : sys(o.sys), plan(o.plan), P(o.P), group(o.group), radix(o.radix), make_system(o.make_system), charts(o.charts),
-        assigned(o.assigned), value(o.value), known(o.known), whole_too_large(o.whole_too_large), start(o.start)
+        assigned(o.assigned), value(o.value), known(o.known), whole_too_large(o.whole_too_large), own_solves(o.own_solves),
+        start(o.start)
   {
   }
   // what a branch found, after what this run found (the order of a sequential run)
@@ -191,6 +213,7 @@ template <class IT, class NT> struct Plan_run
     for (auto& u : b.unresolved) a.unresolved.push_back(std::move(u));
     if (a.diagnosis.empty()) a.diagnosis = b.diagnosis;
     a.block_solves += b.block_solves;
+    a.block_solves_reused += b.block_solves_reused;
     a.boxes += b.boxes;
     a.krawczyk_tests += b.krawczyk_tests;
     a.refinements += b.refinements;
@@ -282,7 +305,10 @@ template <class IT, class NT> struct Plan_run
   }
   template <class CT> Solver_result<IT> solve_block(const Plan_block& blk, bool last, bool own)
   {
-    const Polynomial_system<CT> s = block_system<CT>(blk, own, value);
+    return solve_block_system<CT>(block_system<CT>(blk, own, value), last);
+  }
+  template <class CT> Solver_result<IT> solve_block_system(const Polynomial_system<CT>& s, bool last)
+  {
     Subdivision_solver_parameters q = P;
     // the roots of a block with blocks after it become their coefficients: tighter enclosures
     // keep those coefficients narrow
@@ -459,10 +485,49 @@ template <class IT, class NT> struct Plan_run
     const Plan_block& blk = plan.blocks()[b];
     const bool last = b + 1 == plan.blocks().size();
     const bool own = own_block(blk);
-    Solver_result<IT> res = own ? solve_block<NT>(blk, last, true) : solve_block<IT>(blk, last, false);
-    ++result.block_solves;
-    result.boxes += res.statistics.boxes;
-    result.krawczyk_tests += res.statistics.krawczyk_tests;
+    Solver_result<IT> res;
+    bool solved_here = true;
+    if (own) {
+      // solved once per assignment of the block's own charts (the charts of other groups do not
+      // enter its equations; the system is compared term by term on reuse all the same)
+      Polynomial_system<NT> s = block_system<NT>(blk, true, value);
+      std::vector<int> mine;
+      if (group)
+        for (std::size_t j : blk.variables)
+          if ((*group)[j] != std::size_t(-1)) mine.push_back(charts[(*group)[j]]);
+      std::shared_ptr<Own_solve> e;
+      {
+        std::lock_guard<std::mutex> hold(own_solves->lock);
+        auto& slot = own_solves->by_block_and_charts[std::make_pair(b, mine)];
+        if (!slot) slot = std::make_shared<Own_solve>();
+        e = slot;
+      }
+      bool computed = false;
+      // (the solve inside is sequential: no other branch can run on this thread meanwhile)
+      std::call_once(e->once, [&] {
+        e->result = solve_block_system<NT>(s, last);
+        e->system = s;
+        computed = true;
+      });
+      bool same = e->system.equations.size() == s.equations.size() && e->system.inequalities.size() == s.inequalities.size();
+      for (std::size_t i = 0; same && i < s.equations.size(); ++i) same = identical_polynomials(s.equations[i], e->system.equations[i]);
+      for (std::size_t q = 0; same && q < s.inequalities.size(); ++q) same = identical_polynomials(s.inequalities[q], e->system.inequalities[q]);
+      if (same) {
+        res = e->result;
+        solved_here = computed;
+      } else {
+        res = solve_block_system<NT>(s, last);
+      }
+    } else {
+      res = solve_block<IT>(blk, last, false);
+    }
+    if (solved_here) {
+      ++result.block_solves;
+      result.boxes += res.statistics.boxes;
+      result.krawczyk_tests += res.statistics.krawczyk_tests;
+    } else {
+      ++result.block_solves_reused;
+    }
     if (result.diagnosis.empty() && !res.diagnosis.empty()) result.diagnosis = "block " + std::to_string(b) + ": " + res.diagnosis;
     for (const auto& u : res.unresolved) {
       Plan_unresolved<IT> v;
