@@ -20,6 +20,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <exception>
 #include <functional>
 #include <memory>
 #include <mutex>
@@ -334,11 +335,13 @@ template <class IT, class NT> struct Plan_run
       Plan_root<IT> r;
       r.enclosure = value;
       r.precision = O::multiprecision ? P.precision : O::bits();
-      if (certified && plan.blocks().size() > 1) {
+      if (certified && plan.blocks().size() > 1 && widest(value) > P.tolerance) {
         // the blocks' enclosures carry the widths of the inputs through the chain (interval
         // coefficients evaluated term by term): the Krawczyk test on the whole system, from
         // their product, tightens the root to the tolerance (the root it proves unique in a
-        // box holding the product is the one the blocks proved there)
+        // box holding the product is the one the blocks proved there). A product already
+        // within the tolerance (blocks without inputs: independent parts) needs no test: the
+        // blocks proved it.
         ++result.refinements;
         bool done = false;
         if (!*whole_too_large) try {
@@ -792,6 +795,40 @@ Plan_charts_result<IT> solve_with_plan_over_charts(const Solution_plan& plan, co
     const Polynomial_system<NT>& t = internal::scaled_to_unit(s, scaled);
     return &t == &scaled ? scaled : s;
   };
+  // The system of an assignment of charts, built once: the branches under the roots of a block
+  // ask for the same assignments again (each root of a block asks for every chart of the next).
+  // At most 4096 kept; beyond, built on each request.
+  struct Built
+  {
+    std::once_flag once;
+    Polynomial_system<NT> system;
+    std::exception_ptr error;
+  };
+  struct Built_systems
+  {
+    std::mutex lock;
+    std::map<std::vector<int>, std::shared_ptr<Built>> by_charts;
+  };
+  auto built = std::make_shared<Built_systems>();
+  const std::function<Polynomial_system<NT>(const std::vector<int>&)> build_once = [built, build](const std::vector<int>& charts) {
+    std::shared_ptr<Built> e;
+    {
+      std::lock_guard<std::mutex> hold(built->lock);
+      auto it = built->by_charts.find(charts);
+      if (it != built->by_charts.end()) e = it->second;
+      else if (built->by_charts.size() < 4096) e = built->by_charts[charts] = std::make_shared<Built>();
+    }
+    if (!e) return build(charts);
+    std::call_once(e->once, [&] {
+      try {
+        e->system = build(charts);
+      } catch (...) {
+        e->error = std::current_exception();
+      }
+    });
+    if (e->error) std::rethrow_exception(e->error);
+    return e->system;
+  };
   const std::vector<int> zero(charts_per_group.size(), 0);
   const Polynomial_system<NT> first = build(zero);
   internal::check_solvable(first, plan, who);
@@ -799,7 +836,7 @@ Plan_charts_result<IT> solve_with_plan_over_charts(const Solution_plan& plan, co
   internal::Plan_run<IT, NT> run(first, plan, parameters);
   run.group = &group;
   run.radix = &charts_per_group;
-  run.make_system = build;
+  run.make_system = build_once;
   run.charts = zero;
   run.assigned.assign(charts_per_group.size(), 0);
   const auto start = std::chrono::steady_clock::now();
