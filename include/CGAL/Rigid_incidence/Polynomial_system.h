@@ -48,6 +48,18 @@ template <class NT> bool certainly_zero(const NT& x)
     return x == NT(0);
   }
 }
+// A coefficient that may be zero: exact zero, or an interval containing 0.
+template <class NT> bool may_be_zero(const NT& x)
+{
+  typedef CGAL::Interval_traits<NT> IT;
+  if constexpr (std::is_same<typename IT::Is_interval, CGAL::Tag_true>::value) {
+    typename IT::Lower lower;
+    typename IT::Upper upper;
+    return !(lower(x) > 0) && !(upper(x) < 0);
+  } else {
+    return x == NT(0);
+  }
+}
 // Two coefficients certainly equal: exact equality, or the same degenerate interval [x, x].
 template <class NT> bool certainly_same(const NT& x, const NT& y)
 {

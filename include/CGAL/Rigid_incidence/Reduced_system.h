@@ -453,7 +453,7 @@ private:
     std::vector<char> used(f.number_of_variables(), 0);
     unsigned total = 0;
     for (const auto& t : f.terms()) {
-      if (may_be_zero(t.second)) continue;
+      if (internal::may_be_zero(t.second)) continue;
       unsigned d = 0;
       for (std::size_t v = 0; v < t.first.size(); ++v) {
         d += t.first[v];
@@ -492,7 +492,7 @@ private:
           const int i = square_of(t.first);
           // (a product T_i T_j: its coefficient cancels exactly where the translation enters
           // through a rotation, to an enclosure of 0 with interval coefficients, kept)
-          if (i < 0 && may_be_zero(t.second)) continue;
+          if (i < 0 && internal::may_be_zero(t.second)) continue;
           if (i < 0) return false;
           Exponent e = t.first;
           e[T[std::size_t(i)]] = 0;
@@ -512,11 +512,11 @@ private:
           typename CGAL::Interval_traits<NT>::Upper upper;
           for (const auto& t : a.terms()) {
             auto j = b.terms().find(t.first);
-            if (j == b.terms().end() ? !may_be_zero(t.second) : (upper(t.second) < lower(j->second) || upper(j->second) < lower(t.second)))
+            if (j == b.terms().end() ? !internal::may_be_zero(t.second) : (upper(t.second) < lower(j->second) || upper(j->second) < lower(t.second)))
               return false;
           }
           for (const auto& t : b.terms())
-            if (!a.terms().count(t.first) && !may_be_zero(t.second)) return false;
+            if (!a.terms().count(t.first) && !internal::may_be_zero(t.second)) return false;
           return true;
         } else {
           if (a.terms().size() != b.terms().size()) return false;
@@ -554,18 +554,6 @@ private:
                   " x (" + equations_[sphere].label + "): linear in " + p_->variable_names()[T[0]].substr(0, p_->variable_names()[T[0]].size() - 1);
         equations_[i] = std::move(e);
       }
-    }
-  }
-
-  // an enclosure of 0 (interval coefficients), or 0
-  static bool may_be_zero(const NT& a)
-  {
-    if constexpr (internal::Coefficient_ops<NT>::is_interval) {
-      typename CGAL::Interval_traits<NT>::Lower lower;
-      typename CGAL::Interval_traits<NT>::Upper upper;
-      return !(lower(a) > 0) && !(upper(a) < 0);
-    } else {
-      return a == NT(0);
     }
   }
 

@@ -150,6 +150,18 @@ bool identical_polynomials(const Sparse_polynomial<NT>& f, const Sparse_polynomi
   return true;
 }
 
+// The same equations, inequalities and box, coefficient for coefficient.
+template <class NT>
+bool identical_systems(const Polynomial_system<NT>& a, const Polynomial_system<NT>& b)
+{
+  if (a.equations.size() != b.equations.size() || a.inequalities.size() != b.inequalities.size() || a.box != b.box) return false;
+  for (std::size_t i = 0; i < a.equations.size(); ++i)
+    if (!identical_polynomials(a.equations[i], b.equations[i])) return false;
+  for (std::size_t q = 0; q < a.inequalities.size(); ++q)
+    if (!identical_polynomials(a.inequalities[q], b.inequalities[q])) return false;
+  return true;
+}
+
 template <class IT, class NT> struct Plan_run
 {
   typedef Interval_ops<IT> O;
@@ -512,10 +524,7 @@ template <class IT, class NT> struct Plan_run
         e->system = s;
         computed = true;
       });
-      bool same = e->system.equations.size() == s.equations.size() && e->system.inequalities.size() == s.inequalities.size();
-      for (std::size_t i = 0; same && i < s.equations.size(); ++i) same = identical_polynomials(s.equations[i], e->system.equations[i]);
-      for (std::size_t q = 0; same && q < s.inequalities.size(); ++q) same = identical_polynomials(s.inequalities[q], e->system.inequalities[q]);
-      if (same) {
+      if (identical_systems(s, e->system)) {
         res = e->result;
         solved_here = computed;
       } else {
