@@ -19,6 +19,8 @@
 #include <chrono>
 
 #include <algorithm>
+#include <cerrno>
+#include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <optional>
@@ -38,7 +40,7 @@ static const char* usage_text =
   "  rigid_incidence solve SCENE.json [--json] [--tolerance EPS] [--precision BITS] [--fast]\n"
   "                        [--svg FILE] [--plot A.x,B.z] [--near CONFIG.json] [--max-boxes N]\n"
   "                        [--max-seconds S] [--quiet] [--no-plan] [--no-sweep] [--threads N]\n"
-  "                        [--kernel K]\n"
+  "                        [--max-listed N] [--kernel K]\n"
   "  rigid_incidence family SCENE.json [--json] [--svg FILE] [--samples K] [--tolerance EPS]\n"
   "                        [--precision BITS] [--max-boxes N] [--kernel K]\n"
   "  rigid_incidence solve-system FILE [--json] [--tolerance EPS] [--precision BITS] [--fast]\n"
@@ -105,6 +107,9 @@ static const char* usage_text =
   "            block (--no-plan: whole, for comparison); a chain of hinges braced by near\n"
   "            distances (256 chart combinations or more) is solved along its tree by one\n"
   "            sweep, nothing expanded (--no-sweep: per chart combination, for comparison);\n"
+  "            a reduced system of independent parts (no equation joins them) is answered\n"
+  "            factored: each part's solutions, the configurations their product, counted\n"
+  "            exactly and listed up to --max-listed N (default 10000; 0: all);\n"
   "            --threads N: threads for the\n"
   "            independent pieces (chart combinations, branches of a plan; default: every\n"
   "            core; 1: sequential), the same answer in the same order with any number;\n"
@@ -113,7 +118,10 @@ static const char* usage_text =
   "            side as line drawings; --near CONFIG.json: order the configurations by their\n"
   "            distance to a given one ({\"points\": {label: [x, y, z]}} or a solve --json\n"
   "            output). --json: {scene, analysis, reduced_system {variables, equations},\n"
-  "            complete, certified, diagnosis, solutions [{certified, parameters, charts,\n"
+  "            complete, certified, diagnosis, configuration_count, listing (null, or why\n"
+  "            the list stops), parts [{placements, bodies, variables, count, unresolved,\n"
+  "            solutions [{certified, charts, found_in_charts, parameters}]}] (a factored\n"
+  "            answer; else []), solutions [{certified, parameters, charts,\n"
   "            bodies {name: {rotation, translation}}, points {label: [x, y, z]},\n"
   "            max_residual}], unresolved [{class, reason, box, boxes, charts, points}],\n"
   "            curves, stats}. A scene with one degree of freedom (one equation fewer than\n"
@@ -580,6 +588,18 @@ int main(int argc, char** argv)
         std::cerr << "rigid_incidence: " << e.what() << "\n";
         return 1;
       }
+    } else if (a == "--max-listed") {
+      if (i + 1 >= args.size()) { std::cerr << "rigid_incidence: " << a << " needs a value\n"; return 1; }
+      if (o.command != "solve") { std::cerr << "rigid_incidence: --max-listed is an option of solve\n"; return 1; }
+      const std::string& v = args[++i];
+      char* end = nullptr;
+      errno = 0;
+      const unsigned long long k = v.empty() || v[0] == '-' ? 0 : std::strtoull(v.c_str(), &end, 10);
+      if (v.empty() || v[0] == '-' || !end || *end != '\0' || errno == ERANGE) {
+        std::cerr << "rigid_incidence: --max-listed: '" << v << "' is not a whole number of configurations (0: all)\n";
+        return 1;
+      }
+      o.solve.max_listed = std::size_t(k);
     } else if (a == "--threads") {
       if (i + 1 >= args.size()) { std::cerr << "rigid_incidence: " << a << " needs a value\n"; return 1; }
       if (o.command != "solve" && o.command != "solve-system") { std::cerr << "rigid_incidence: --threads is an option of solve and solve-system\n"; return 1; }

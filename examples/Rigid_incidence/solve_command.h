@@ -46,12 +46,22 @@ struct Solve_options
   double max_seconds = 0;  // --max-seconds: the whole solve (0: no limit)
   bool quiet = false;      // --quiet: no progress line
   unsigned threads = 0;    // --threads: 0, every core (Subdivision_solver_parameters::threads)
+  std::size_t max_listed = RI::Scene_solve_parameters().maximal_listed_configurations;  // --max-listed (0: all)
 };
 
 // SIGINT and SIGTERM during a solve: the solve stops as at its time limit and the partial
 // answer is printed (the exit status is then 128 + the signal); a second one, more than half a
 // second after the first, ends the program at once (the default action).
 inline std::atomic<bool> interrupted{false};
+
+// An exact count as a JSON number where it fits in 64 bits, else as its decimal digits
+inline nlohmann::ordered_json count_json(const CGAL::Gmpz& n)
+{
+  std::ostringstream o;
+  o << n;
+  if (n >= 0 && o.str().size() < 20) return nlohmann::ordered_json(std::stoull(o.str()));
+  return nlohmann::ordered_json(o.str());
+}
 
 // The work of a full solve (analyze, reduce), or nothing and why it could not be estimated
 template <class Traits>
@@ -450,6 +460,7 @@ RI::Scene_solve_result run(const RI::Scene& scene, const RI::Rigid_body_collecti
   p.solver.threads = o.threads;
   if (o.max_boxes) p.solver.maximal_boxes = o.max_boxes;
   p.maximal_seconds = o.max_seconds;
+  p.maximal_listed_configurations = o.max_listed;
   p.solve_with_plan = !o.no_plan;
   p.sweep = !o.no_sweep;
   p.interrupt = &interrupted;
@@ -520,6 +531,21 @@ int solve(const RI::Scene& scene, const RI::Rigid_body_collection<Traits>& input
     j["diagnosis"] = r.diagnosis.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(r.diagnosis);
     j["no_configuration"] = r.no_configuration.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(r.no_configuration);
     j["limits"] = r.limits;
+    j["configuration_count"] = count_json(r.configuration_count);
+    j["listing"] = r.listing.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(r.listing);
+    nlohmann::ordered_json parts = nlohmann::ordered_json::array();
+    for (const auto& q : r.parts) {
+      nlohmann::ordered_json sols = nlohmann::ordered_json::array();
+      for (const auto& x : q.solutions) {
+        nlohmann::ordered_json params = nlohmann::ordered_json::object();
+        for (std::size_t i = 0; i < q.variables.size() && i < x.parameters.size(); ++i)
+          params[q.variables[i]] = {x.parameters[i].first, x.parameters[i].second};
+        sols.push_back({{"certified", x.certified}, {"charts", x.charts}, {"found_in_charts", x.found}, {"parameters", params}});
+      }
+      parts.push_back({{"placements", q.placements}, {"bodies", q.bodies}, {"variables", q.variables}, {"count", q.solutions.size()},
+                       {"unresolved", q.unresolved}, {"solutions", sols}});
+    }
+    j["parts"] = parts;
     j["coefficient_precision"] = r.coefficient_precision;
     j["precision_history"] = r.precision_history;
     nlohmann::ordered_json co = nlohmann::ordered_json::array();
@@ -637,13 +663,32 @@ int solve(const RI::Scene& scene, const RI::Rigid_body_collection<Traits>& input
   for (const auto& q : scene.inequalities)
     std::cout << "inequality: det(" << q.points[1] << " - " << q.points[0] << ", " << q.points[2] << " - " << q.points[0] << ", "
               << q.points[3] << " - " << q.points[0] << ") " << (q.negative ? "<= 0" : ">= 0") << "\n";
-  std::cout << r.configurations.size() << " configuration(s)" << (r.curves.empty() ? "" : " and " + std::to_string(r.curves.size()) + " curve branch(es)");
+  if (!r.parts.empty()) {
+    // the factored answer: per placement combination, its parts and their counts
+    std::cout << "independent parts (the configurations are their product):\n";
+    for (const auto& q : r.parts) {
+      std::cout << "  " << q.solutions.size() << " solution(s) of the part placing";
+      for (const auto& b : q.bodies) std::cout << " " << b;
+      std::cout << " (" << q.variables.size() << " variables";
+      if (q.unresolved) std::cout << ", " << q.unresolved << " unresolved region(s)";
+      std::cout << ")";
+      bool any = false;
+      for (int v : q.placements) any = any || v != 0;
+      if (any) {
+        std::cout << ", placements";
+        for (int v : q.placements) std::cout << " " << v;
+      }
+      std::cout << "\n";
+    }
+  }
+  std::cout << r.configuration_count << " configuration(s)" << (r.curves.empty() ? "" : " and " + std::to_string(r.curves.size()) + " curve branch(es)");
   std::size_t uncertified = 0, singular = 0;
   for (const auto& x : r.configurations) { uncertified += !x.certified; singular += x.singular; }
   if (uncertified) std::cout << " (" << uncertified << " not certified)";
   if (singular) std::cout << " (" << singular << " singular)";
   if (r.complete()) std::cout << ", all certified: complete\n";
   else std::cout << "; the result is NOT complete" << (r.unresolved.empty() ? "" : " (unresolved regions below)") << "\n";
+  if (!r.listing.empty()) std::cout << "listed: " << r.listing << " (--max-listed N)\n";
   std::size_t k = 0;
   for (const auto& x : r.configurations) {
     std::cout << "\nconfiguration " << ++k << ": " << (x.certified ? "certified" : "NOT certified")

@@ -9,7 +9,7 @@
 // onto the printed points.
 //   solve_json_check OUTPUT SCENE [--solutions N] [--complete true|false] [--certified N] [--singular N]
 //                    [--diagnosis PREFIX] [--unresolved-reason SUBSTRING] [--no-solutions-count]
-//                    [--tolerance T] [--distinct D] [--coefficient-precision-at-least BITS]
+//                    [--tolerance T] [--distinct D] [--coefficient-precision-at-least BITS] [--count N]
 // --distinct: two solutions must differ by more than D times the scene's size (default 1e-7;
 // tetra_i's two configurations are 1.5e-15 apart).
 
@@ -156,6 +156,27 @@ int main(int argc, char** argv)
     if (expect.count(k)) CHECK((expect[k] == "true") == got, k << ": got " << got << ", expected " << expect[k]);
   };
   want_bool("--complete", j["complete"].get<bool>());
+  // the exact count against the list and the factored answer: every solution listed unless
+  // `listing` says why not; the parts' counts multiplied per placement combination (the
+  // combinations without parts contribute their listed solutions)
+  if (j.contains("configuration_count") && j["configuration_count"].is_number()) {
+    const double count = j["configuration_count"].get<double>();
+    if (j["listing"].is_null()) CHECK(count == double(sols.size()), "configuration_count " << count << " but " << sols.size() << " listed, no listing note");
+    else CHECK(count > double(sols.size()), "configuration_count " << count << " with " << sols.size() << " listed and a listing note");
+    if (j.contains("parts") && !j["parts"].empty()) {
+      std::map<std::string, double> product;
+      for (const auto& q : j["parts"]) {
+        CHECK(q["count"].get<double>() == double(q["solutions"].size()), "a part's count is not its solutions'");
+        auto it = product.emplace(q["placements"].dump(), 1.0).first;
+        it->second *= q["count"].get<double>();
+      }
+      double sum = 0;
+      for (const auto& x : product) sum += x.second;
+      if (j["listing"].is_null()) CHECK(sum <= count, "the parts' products " << sum << " exceed the count " << count);
+      else CHECK(sum <= count && sum > 0, "the parts' products " << sum << " against the count " << count);
+    }
+  }
+  if (expect.count("--count")) CHECK(j["configuration_count"].dump() == expect["--count"], "configuration_count " << j["configuration_count"].dump() << ", expected " << expect["--count"]);
   if (expect.count("--solutions")) CHECK(long(sols.size()) == std::stol(expect["--solutions"]), "solutions: " << sols.size() << ", expected " << expect["--solutions"]);
   if (expect.count("--singular")) CHECK(singular == std::stol(expect["--singular"]), "singular: " << singular << ", expected " << expect["--singular"]);
   if (expect.count("--certified")) CHECK(certified == std::stol(expect["--certified"]), "certified: " << certified << ", expected " << expect["--certified"]);

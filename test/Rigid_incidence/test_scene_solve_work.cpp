@@ -38,6 +38,7 @@
 #include <atomic>
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <array>
 #include <map>
@@ -58,7 +59,8 @@ struct Outcome
 };
 
 static Outcome solve(const RI::Scene& scene, bool plan = true, double seconds = 0, const std::atomic<bool>* interrupt = nullptr,
-                     bool over_charts = true, bool propagation = true)
+                     bool over_charts = true, bool propagation = true,
+                     const std::function<void(RI::Scene_solve_parameters&)>& adjust = nullptr)
 {
   Outcome o;
   RI::Rigid_body_collection<Traits> input = RI::make_collection<Traits>(scene);
@@ -73,6 +75,7 @@ static Outcome solve(const RI::Scene& scene, bool plan = true, double seconds = 
   p.chart_propagation = propagation;
   p.maximal_seconds = seconds;
   p.interrupt = interrupt;
+  if (adjust) adjust(p);
   if (RI::exact_coefficients(c, t)) o.result = RI::solve_scene<CGAL::Interval_nt<false>, CGAL::Gmpq>(input, c, t, wf, p);
   else o.result = RI::solve_scene<CGAL::Interval_nt<false>, CGAL::Interval_nt<false>>(input, c, t, wf, p);
   return o;
@@ -230,9 +233,43 @@ static void along_the_plan()
     // chart of its own rotation (4 + 4 block solves, the second part's roots reused on every
     // branch of the first's)
     CHECK(full.work.independent_parts == 2, "two platforms: " << full.work.independent_parts << " independent parts, expected 2");
-    CHECK(full.result.statistics.block_solves == 8 && full.result.statistics.block_solves_reused > 0,
-          "two platforms: " << full.result.statistics.block_solves << " block solves, " << full.result.statistics.block_solves_reused
-                            << " reused; expected 8, and reuses");
+    CHECK(full.result.statistics.block_solves == 8 && full.result.parts.size() == 2,
+          "two platforms: " << full.result.statistics.block_solves << " block solves, " << full.result.parts.size()
+                            << " parts; expected 8 and 2 (a factored answer)");
+    // the factored answer against the plan over every chart assignment listed (the oracle:
+    // each full assignment's roots, merged across charts): the same configurations, the
+    // count the product of the parts' counts, each part's bodies one plate
+    const Outcome listed = solve(platforms, true, 0, nullptr, true, true, [](RI::Scene_solve_parameters& p) { p.factor_parts = false; });
+    const auto& f = full.result;
+    CGAL::Gmpz product = 1;
+    for (const auto& q : f.parts) product *= CGAL::Gmpz(long(q.solutions.size()));
+    std::cout << "two platforms factored: " << f.parts[0].solutions.size() << " x " << f.parts[1].solutions.size() << " = " << f.configuration_count
+              << "; listed from every chart assignment: " << listed.result.configurations.size() << " (" << listed.result.statistics.block_solves
+              << " block solves, " << listed.result.statistics.block_solves_reused << " reused)\n";
+    CHECK(listed.result.parts.empty() && listed.result.complete() && listed.result.statistics.block_solves_reused > 0,
+          "two platforms, not factored: no parts, complete, the second plate's solves reused");
+    CHECK(f.configuration_count == product && f.configuration_count == CGAL::Gmpz(long(f.configurations.size())) &&
+              f.configurations.size() == listed.result.configurations.size() && among(f, listed.result, labels) &&
+              among(listed.result, f, labels) && f.listing.empty(),
+          "two platforms: the factored answer (" << f.configuration_count << ", " << f.configurations.size()
+                                                 << " listed) is the listed one (" << listed.result.configurations.size() << ")");
+    CHECK(f.parts[0].bodies.size() == 1 && f.parts[1].bodies.size() == 1 && f.parts[0].bodies != f.parts[1].bodies &&
+              f.parts[0].variables.size() == 6 && f.parts[1].variables.size() == 6,
+          "two platforms: each part one plate's edge, 6 variables");
+    // the list cut at 5: the count exact, the answer still complete, the listing says so
+    const Outcome five = solve(platforms, true, 0, nullptr, true, true, [](RI::Scene_solve_parameters& p) { p.maximal_listed_configurations = 5; });
+    std::cout << "  at most 5 listed: " << five.result.listing << "\n";
+    CHECK(five.result.configurations.size() == 5 && five.result.configuration_count == f.configuration_count && five.result.complete() &&
+              !five.result.listing.empty() && among(five.result, f, labels),
+          "two platforms, 5 listed: " << five.result.configurations.size() << " listed of " << five.result.configuration_count);
+    // the same cut where the answer is not factored: the first five found, the count exact
+    const Outcome five_listed = solve(platforms, true, 0, nullptr, true, true, [](RI::Scene_solve_parameters& p) {
+      p.maximal_listed_configurations = 5;
+      p.factor_parts = false;
+    });
+    CHECK(five_listed.result.configurations.size() == 5 && five_listed.result.configuration_count == f.configuration_count &&
+              five_listed.result.complete() && !five_listed.result.listing.empty(),
+          "two platforms, not factored, 5 listed: " << five_listed.result.configurations.size() << " of " << five_listed.result.configuration_count);
     // the paper's criterion alone (depth sum) takes the star on plate 0, where the legs between
     // plates 1 and 2 are equations in both plates' variables: one part, and the whole system of
     // 12 variables is refused for its dense arrays (what the plan avoids)

@@ -901,6 +901,92 @@ void malformed()
   CHECK(!thrown, "a valid system throws");
 }
 
+// independent_parts() against a flood fill over the variables (an oracle written apart: each
+// part grown from its first variable by repeated passes over the equations, inequalities and
+// groups), on random supports with groups of 1 to 3 variables; and its errors
+static void independent_parts_against_flood_fill(CGAL::Random& rnd, int rounds)
+{
+  for (int round = 0; round < rounds; ++round) {
+    const std::size_t n = std::size_t(rnd.get_int(0, 14));
+    std::vector<std::vector<std::size_t>> eqv(std::size_t(rnd.get_int(0, 10))), inv(std::size_t(rnd.get_int(0, 3)));
+    for (auto* list : {&eqv, &inv})
+      for (auto& vs : *list) {
+        const int k = n == 0 ? 0 : rnd.get_int(0, 4);
+        for (int j = 0; j < k; ++j) vs.push_back(std::size_t(rnd.get_int(0, int(n))));
+        std::sort(vs.begin(), vs.end());
+        vs.erase(std::unique(vs.begin(), vs.end()), vs.end());
+      }
+    std::vector<std::size_t> group;
+    if (rnd.get_bool()) {
+      std::size_t g = 0;
+      for (std::size_t j = 0; j < n;) {
+        const std::size_t len = std::size_t(rnd.get_int(1, 4));
+        const bool none = rnd.get_int(0, 4) == 0;
+        for (std::size_t k = 0; k < len && j < n; ++k, ++j) group.push_back(none ? std::size_t(-1) : g);
+        if (!none) ++g;
+      }
+    }
+    const auto parts = RI::independent_parts(n, eqv, inv, group);
+    // the oracle
+    std::vector<long> part_of(n, -1);
+    std::size_t count = 0;
+    for (std::size_t s = 0; s < n; ++s) {
+      if (part_of[s] >= 0) continue;
+      part_of[s] = long(count);
+      for (bool grew = true; grew;) {
+        grew = false;
+        auto join = [&](const std::vector<std::size_t>& vs) {
+          bool in = false;
+          for (std::size_t j : vs) in = in || part_of[j] == long(count);
+          if (in)
+            for (std::size_t j : vs)
+              if (part_of[j] != long(count)) { part_of[j] = long(count); grew = true; }
+        };
+        for (const auto* list : {&eqv, &inv})
+          for (const auto& vs : *list) join(vs);
+        for (std::size_t j = 0; j < group.size(); ++j) {
+          if (group[j] == std::size_t(-1)) continue;
+          std::vector<std::size_t> same;
+          for (std::size_t k = 0; k < group.size(); ++k) if (group[k] == group[j]) same.push_back(k);
+          join(same);
+        }
+      }
+      ++count;
+    }
+    CHECK(parts.size() == count, "independent_parts: " << parts.size() << " parts, the flood fill " << count);
+    if (parts.size() != count) continue;
+    std::vector<std::size_t> eq_seen, in_seen;
+    for (std::size_t k = 0; k < parts.size(); ++k) {
+      for (std::size_t j : parts[k].variables) CHECK(part_of[j] == long(k), "independent_parts: variable " << j << " in part " << k);
+      CHECK(parts[k].variables.size() == std::size_t(std::count(part_of.begin(), part_of.end(), long(k))), "independent_parts: part " << k << "'s size");
+      for (std::size_t i : parts[k].equations) {
+        eq_seen.push_back(i);
+        CHECK(eqv[i].empty() ? k == 0 : part_of[eqv[i][0]] == long(k), "independent_parts: equation " << i << " in part " << k);
+      }
+      for (std::size_t q : parts[k].inequalities) {
+        in_seen.push_back(q);
+        CHECK(inv[q].empty() ? k == 0 : part_of[inv[q][0]] == long(k), "independent_parts: inequality " << q << " in part " << k);
+      }
+      for (std::size_t g : parts[k].groups) {
+        bool found = false;
+        for (std::size_t j : parts[k].variables) found = found || (!group.empty() && group[j] == g);
+        CHECK(found, "independent_parts: group " << g << " in part " << k << " without a variable of it");
+      }
+    }
+    std::sort(eq_seen.begin(), eq_seen.end());
+    std::sort(in_seen.begin(), in_seen.end());
+    CHECK(n == 0 || (eq_seen.size() == eqv.size() && std::adjacent_find(eq_seen.begin(), eq_seen.end()) == eq_seen.end() &&
+                     in_seen.size() == inv.size()),
+          "independent_parts: every equation and inequality in exactly one part");
+  }
+  bool threw = false;
+  try { RI::independent_parts(2, {{0, 5}}); } catch (const RI::Input_error& e) { threw = std::string(e.what()).find("variable 5 of 2") != std::string::npos; }
+  CHECK(threw, "independent_parts: a variable beyond n is refused");
+  threw = false;
+  try { RI::independent_parts(3, {{0}}, {}, {0, 0}); } catch (const RI::Input_error& e) { threw = std::string(e.what()).find("2 groups for 3 variables") != std::string::npos; }
+  CHECK(threw, "independent_parts: groups of the wrong size are refused");
+}
+
 int main(int argc, char** argv)
 {
   unsigned seed = argc > 1 ? unsigned(std::strtoul(argv[1], nullptr, 10)) : 20260311u;
@@ -911,6 +997,7 @@ int main(int argc, char** argv)
   hand_made();
   from_polynomial_system();
   malformed();
+  independent_parts_against_flood_fill(rnd, 50 * per_cell);
   std::size_t square = 0, blocks = 0, one_dof = 0, forced = 0;
   random_square_systems(rnd, per_cell, square, blocks);
   std::cout << "  " << square << " square systems, " << blocks << " blocks\n";

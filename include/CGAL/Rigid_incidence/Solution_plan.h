@@ -18,6 +18,7 @@
 #include <CGAL/Rigid_incidence/Polynomial_system.h>
 
 #include <boost/graph/adjacency_list.hpp>
+#include <boost/graph/connected_components.hpp>
 #include <boost/graph/max_cardinality_matching.hpp>
 #include <boost/graph/strong_components.hpp>
 #include <boost/graph/topological_sort.hpp>
@@ -391,6 +392,78 @@ private:
   std::size_t left_out_ = none;
   std::vector<std::size_t> over_eq_, over_var_, under_eq_, under_var_, unused_, unattached_;
 };
+
+/*!
+\ingroup PkgRigidIncidenceSolver
+\brief One independent part of a system (see `independent_parts()`).
+*/
+struct Independent_part
+{
+  std::vector<std::size_t> variables;     ///< increasing
+  std::vector<std::size_t> equations;     ///< the equations in these variables, increasing
+  std::vector<std::size_t> inequalities;  ///< the inequalities in these variables, increasing
+  std::vector<std::size_t> groups;        ///< the groups of these variables (see below), increasing
+};
+
+/*!
+\ingroup PkgRigidIncidenceSolver
+\brief The independent parts of a system of `n` variables: the connected components of the
+graph on its variables where an equation (its variables `equations[i]`), an inequality
+(`inequalities[q]`) or a group joins the variables it involves (`group[j]`, the group of
+variable \f$j\f$, `std::size_t(-1)` for none; empty: no groups; a scene's chart groups: the
+variables of one tree edge, which change charts together).
+
+The solutions of the system are the product of its parts' solutions: each equation and
+inequality involves one part's variables only. The parts are ordered by their first variable;
+an equation or inequality without variables goes to the first part. No variables: no part.
+\throws Input_error if a variable index is not below `n`, or `group` is neither empty nor of size `n`.
+*/
+inline std::vector<Independent_part> independent_parts(std::size_t n, const std::vector<std::vector<std::size_t>>& equations,
+                                                       const std::vector<std::vector<std::size_t>>& inequalities = {},
+                                                       const std::vector<std::size_t>& group = {})
+{
+  if (!group.empty() && group.size() != n)
+    throw Input_error("independent_parts: " + std::to_string(group.size()) + " groups for " + std::to_string(n) + " variables");
+  std::vector<Independent_part> parts;
+  if (n == 0) return parts;
+  boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS> g(n);
+  for (const auto* list : {&equations, &inequalities})
+    for (const auto& vs : *list)
+      for (std::size_t j : vs) {
+        if (j >= n) throw Input_error("independent_parts: variable " + std::to_string(j) + " of " + std::to_string(n));
+        if (j != vs[0]) boost::add_edge(vs[0], j, g);
+      }
+  std::vector<std::size_t> first_of_group;
+  for (std::size_t j = 0; j < group.size(); ++j) {
+    const std::size_t k = group[j];
+    if (k == std::size_t(-1)) continue;
+    if (k >= first_of_group.size()) first_of_group.resize(k + 1, std::size_t(-1));
+    if (first_of_group[k] == std::size_t(-1)) first_of_group[k] = j;
+    else boost::add_edge(first_of_group[k], j, g);
+  }
+  std::vector<std::size_t> component(n);
+  boost::connected_components(g, component.data());
+  // renumbered by first variable
+  std::vector<std::size_t> index(n, std::size_t(-1));
+  for (std::size_t j = 0; j < n; ++j) {
+    std::size_t& k = index[component[j]];
+    if (k == std::size_t(-1)) {
+      k = parts.size();
+      parts.emplace_back();
+    }
+    parts[k].variables.push_back(j);
+    if (!group.empty() && group[j] != std::size_t(-1)) parts[k].groups.push_back(group[j]);
+  }
+  for (auto& p : parts) {
+    std::sort(p.groups.begin(), p.groups.end());
+    p.groups.erase(std::unique(p.groups.begin(), p.groups.end()), p.groups.end());
+  }
+  for (std::size_t i = 0; i < equations.size(); ++i)
+    parts[equations[i].empty() ? 0 : index[component[equations[i][0]]]].equations.push_back(i);
+  for (std::size_t q = 0; q < inequalities.size(); ++q)
+    parts[inequalities[q].empty() ? 0 : index[component[inequalities[q][0]]]].inequalities.push_back(q);
+  return parts;
+}
 
 } // namespace Rigid_incidence
 } // namespace CGAL

@@ -13,6 +13,7 @@
 #ifndef CGAL_RIGID_INCIDENCE_SOLVE_SCENE_H
 #define CGAL_RIGID_INCIDENCE_SOLVE_SCENE_H
 
+#include <CGAL/Gmpz.h>
 #include <CGAL/Rigid_incidence/Configuration.h>
 #include <CGAL/Rigid_incidence/Curve_tracer.h>
 #include <CGAL/Rigid_incidence/Reduced_system.h>
@@ -129,6 +130,20 @@ struct Scene_solve_parameters
   /// reduced system is square with more than one block, in a first pass. false: each chart
   /// combination solved along its plan alone (the tests' oracle).
   bool plan_over_charts = true;
+  /// With `plan_over_charts`: a reduced system that falls into independent parts (no
+  /// equation, inequality or tree edge joins them: `independent_parts()`, e.g. one per plate of
+  /// stacked platforms) is solved part by part, each over its own edges' charts, and answered
+  /// factored: the scene's configurations are the product of the parts' solutions
+  /// (`Scene_solve_result::parts`), counted exactly and listed up to
+  /// `maximal_listed_configurations`. Not where a body outside the covering set has several
+  /// placements (its fit depends on every part). false: every full chart assignment listed
+  /// from one plan over the charts (the tests' oracle).
+  bool factor_parts = true;
+  /// The most configurations `Scene_solve_result::configurations` lists (0: no limit). The
+  /// count (`Scene_solve_result::configuration_count`) stays exact and the answer complete when
+  /// the list is cut; `Scene_solve_result::listing` says so. A factored answer's product is
+  /// expanded only up to it (and, in time, up to `maximal_seconds`).
+  std::size_t maximal_listed_configurations = 10000;
   /// Before the chart combinations of a scene whose incidence tree is made of hinges (and
   /// whose covering bodies all have coordinates) are built, choose the hinges' charts lazily
   /// along the tree (`solve_tree_system()` with `Tree_solver_parameters::charts_only`: the
@@ -150,7 +165,8 @@ struct Scene_solve_parameters
   /// the fewest chart combinations for which `sweep` is used (below, the expanded systems are
   /// solved faster: chain of 8 tetrahedra, 128 combinations)
   std::size_t sweep_from = 256;
-  /// Called after each combination of charts and placements is solved (empty: never), one call
+  /// Called once before the first combination of charts and placements is solved and after each
+  /// one (empty: never), one call
   /// at a time and in the order of the combinations, from the thread that called
   /// `solve_scene()` or, with `solver.threads` other than 1, from any thread of the solve; the
   /// command-line tool prints it on a terminal.
@@ -226,6 +242,39 @@ struct Scene_curve
   /// empty, or what limits the claim: e.g. the equation left out to trace a curve of a square
   /// system (checked to vanish at every point, not proved)
   std::string note;
+};
+
+/// \ingroup PkgRigidIncidenceSolver
+/// A solution of one independent part of a scene's reduced system (see `Scene_part`).
+struct Scene_part_solution
+{
+  bool certified = false;                             ///< the part's root is certified
+  bool on_chart_border = false;                       ///< it lies on the border of its chart's box
+  bool on_inequality_boundary = false;                ///< some inequality may be 0 there
+  /// per chart group of the reduced system (tree edge), its chart: those of the part's own
+  /// edges (the other entries are 0 and do not matter)
+  std::vector<int> charts;
+  std::vector<std::pair<double, double>> parameters;  ///< per variable of the part: its enclosure
+  std::size_t found = 1;                              ///< chart assignments it was found in
+};
+
+/// \ingroup PkgRigidIncidenceSolver
+/// An independent part of a scene's reduced system in one combination of placements: a set of
+/// tree edges no equation links to the others (`independent_parts()`). The scene's
+/// configurations with these placements are the product of its parts' solutions: one solution
+/// per part, their parameters side by side (`Scene_solve_parameters::factor_parts`).
+struct Scene_part
+{
+  std::vector<int> placements;                  ///< the placement combination it belongs to
+  std::vector<std::string> variables;           ///< its variables (names of the reduced system's)
+  std::vector<std::size_t> variable_indices;    ///< their indices in the reduced system
+  /// the bodies its tree edges place, each relative to its parent in the incidence tree
+  std::vector<std::string> bodies;
+  /// its distinct solutions, each verified in the original system with one solution of every
+  /// other part (a constraint involves one part's edges only: the residuals of the product's
+  /// configurations are those of their parts)
+  std::vector<Scene_part_solution> solutions;
+  std::size_t unresolved = 0;  ///< regions it left undecided (in `Scene_solve_result::unresolved`)
 };
 
 /// \ingroup PkgRigidIncidenceSolver
@@ -312,6 +361,16 @@ struct Scene_solve_result
   std::vector<Scene_placement_report> placements;
   /// every limit that cut the search short, and what it left out (then the result is not complete)
   std::vector<std::string> limits;
+  /// the number of configurations found, exact: `configurations.size()` unless the list was
+  /// cut (`listing`); the product of the parts' solutions where the answer is factored
+  CGAL::Gmpz configuration_count = 0;
+  /// the independent parts of a factored answer, per combination of placements (empty: the
+  /// answer is not factored); see `Scene_solve_parameters::factor_parts`
+  std::vector<Scene_part> parts;
+  /// empty when `configurations` lists every configuration found; else why the list stops
+  /// (`Scene_solve_parameters::maximal_listed_configurations`, or the time limit reached while
+  /// a factored answer was expanded). The count and the completeness do not depend on it.
+  std::string listing;
   /// nonempty: the scene has no real configuration, decided exactly, and why (the result is
   /// complete with no configuration)
   std::string no_configuration;
@@ -441,11 +500,7 @@ Scene_solve_work scene_solve_work(const Rigid_body_collection<Traits>& c, const 
   for (const auto& e : r.equations()) support.push_back(e.variables);
   const Solution_plan plan(w.variables, support);
   for (const auto& b : plan.blocks()) w.block_sizes.push_back(b.variables.size());
-  boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS> g(w.variables);
-  for (const auto& vs : support)
-    for (std::size_t k = 1; k < vs.size(); ++k) boost::add_edge(vs[0], vs[k], g);
-  std::vector<std::size_t> component(w.variables);
-  w.independent_parts = w.variables == 0 ? 0 : std::size_t(boost::connected_components(g, component.data()));
+  w.independent_parts = independent_parts(w.variables, support).size();
   return w;
 }
 
@@ -1235,6 +1290,46 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
     found.push_back({s, size});
     remember_found(found.size() - 1);
   };
+  // A root's configuration (the root's values `x` in the parametrization `p` of its charts,
+  // with `v.placements`) into `v`, with its singular marks and its residuals in the original
+  // system; its size returned. `multiple`: the centre of a possible multiple root.
+  auto finish_configuration = [&](Scene_configuration& v, const Incidence_tree_parametrization<Traits, NT>& p, const std::vector<double>& x,
+                                  bool multiple) {
+    for (std::size_t b = 0; b < singular_body.size(); ++b)
+      if (!singular_body[b].empty()) {
+        v.singular = true;
+        v.singular_reason = joined_reasons(v.singular_reason, singular_body[b]);
+      }
+    for (std::size_t b = 0; b < enumerations.size(); ++b) {
+      const Body_enclosure<CGAL::Interval_nt<false>>* e = always_double[b];
+      if (chosen_double[b] && b < v.placements.size() && std::size_t(v.placements[b]) < enumerations[b]->placements.size())
+        e = &enumerations[b]->placements[std::size_t(v.placements[b])];
+      if (e && e->singular) {
+        v.singular = true;
+        v.singular_reason = joined_reasons(v.singular_reason, e->singular_reason);
+      }
+    }
+    v.configuration = configuration(c, tree, p, x, v.placements);
+    // a point standardize() put on a body's line where two distances' spheres touch: a
+    // double point of those two equations, which the scene's other equations may still
+    // hold (then, as below, the root is simple)
+    for (const std::string& why : c.singular_notes()) {
+      v.singular = true;
+      v.singular_reason = joined_reasons(v.singular_reason, why);
+    }
+    // a height exactly 0 in a placement is a double point of the body's own distances;
+    // further equations of the scene (a distance or a body it leaves to the reduced
+    // system) may still hold the point: then the Jacobian has full rank and the root is simple
+    if (v.singular && !multiple && jacobian_conditioning(original, v.configuration) > 1e-7) {
+      v.singular = false;
+      v.singular_reason.clear();
+    }
+    v.residuals = residuals(original, v.configuration);
+    v.max_residual = v.residuals.max();
+    const double vsize = internal::configuration_size(v.configuration);
+    v.max_relative_residual = internal::relative_residual(v.residuals, vsize);
+    return vsize;
+  };
   auto process = [&](const std::vector<int>& charts, const Reduced_system<Traits, NT>& r, const Polynomial_system<NT>& sys,
                      Solver_result<IT>& res) {
     if (positive.empty() && !res.diagnosis.empty()) {
@@ -1395,11 +1490,6 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
       s.placements = placements;
       s.variables = sys.variable_names;
       for (const auto& e : root.enclosure) s.parameters.push_back(CGAL::to_interval(e));
-      for (std::size_t b = 0; b < singular_body.size(); ++b)
-        if (!singular_body[b].empty()) {
-          s.singular = true;
-          s.singular_reason = joined_reasons(s.singular_reason, singular_body[b]);
-        }
       // one configuration per placement of the bodies outside the covering set that fits
       std::vector<Scene_configuration> variants_found;
       Scene_configuration first_failed;
@@ -1408,34 +1498,7 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
       do {
         Scene_configuration v = s;
         for (std::size_t k = 0; k < nc_bodies.size(); ++k) v.placements[nc_bodies[k]] = nc[k];
-        for (std::size_t b = 0; b < enumerations.size(); ++b) {
-          const Body_enclosure<CGAL::Interval_nt<false>>* e = always_double[b];
-          if (chosen_double[b] && b < v.placements.size() && std::size_t(v.placements[b]) < enumerations[b]->placements.size())
-            e = &enumerations[b]->placements[std::size_t(v.placements[b])];
-          if (e && e->singular) {
-            v.singular = true;
-            v.singular_reason = joined_reasons(v.singular_reason, e->singular_reason);
-          }
-        }
-        v.configuration = configuration(r, root.approximation, v.placements);
-        // a point standardize() put on a body's line where two distances' spheres touch: a
-        // double point of those two equations, which the scene's other equations may still
-        // hold (then, as below, the root is simple)
-        for (const std::string& why : c.singular_notes()) {
-          v.singular = true;
-          v.singular_reason = joined_reasons(v.singular_reason, why);
-        }
-        // a height exactly 0 in a placement is a double point of the body's own distances;
-        // further equations of the scene (a distance or a body it leaves to the reduced
-        // system) may still hold the point: then the Jacobian has full rank and the root is simple
-        if (v.singular && !from_region[ri] && jacobian_conditioning(original, v.configuration) > 1e-7) {
-          v.singular = false;
-          v.singular_reason.clear();
-        }
-        v.residuals = residuals(original, v.configuration);
-        v.max_residual = v.residuals.max();
-        const double vsize = internal::configuration_size(v.configuration);
-        v.max_relative_residual = internal::relative_residual(v.residuals, vsize);
+        const double vsize = finish_configuration(v, r.parametrization(), root.approximation, bool(from_region[ri]));
         // a multiple root's centre must satisfy the system far more closely than a root's
         // double approximation (the cluster is narrow at the solver's precision)
         if (internal::verified(v.residuals, from_region[ri] ? (std::min)(parameters.residual_threshold, 1e-10) : parameters.residual_threshold, vsize)) {
@@ -1639,6 +1702,310 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
       report();
     }
   }
+  // The factored answer of the placement combination `placements` (see its call in the loop
+  // below): `parts` of the system s0 of chart 0, `eqv` and `inv` the union of the supports
+  // over the charts, `group` the chart group (tree edge) of each variable, `build` the
+  // reduced system of a full chart assignment. False, with nothing recorded, where it does
+  // not apply (the plan over every chart then solves the combination).
+  CGAL::Gmpz not_listed = 0;     // configurations a factored answer counted and did not list
+  std::string listing_stop;      // why a factored answer's expansion stopped (empty: it did not)
+  std::size_t product_unverified = 0;  // listed products a residual refused (see below)
+  auto solve_factored = [&](const std::vector<Independent_part>& parts, const std::vector<std::vector<std::size_t>>& eqv,
+                            const std::vector<std::vector<std::size_t>>& inv, const std::vector<std::size_t>& group,
+                            const auto& build, const Polynomial_system<NT>& s0) -> bool {
+    typedef Incidence_tree_parametrization<Traits, NT> Parametrization;
+    const std::size_t n = s0.number_of_variables(), npos = std::size_t(-1);
+    const double threshold = parameters.residual_threshold;
+    // each part along its own plan, over its own edges' charts (the others at chart 0: its
+    // equations do not see them)
+    struct Part_run
+    {
+      const Independent_part* part;
+      std::vector<std::size_t> local_group;
+      std::vector<int> radix;
+      Plan_charts_result<IT> result;
+    };
+    std::vector<Part_run> runs;
+    auto t2 = Clock::now();
+    for (const auto& part : parts) {
+      Part_run pr;
+      pr.part = &part;
+      auto local = [&](const std::vector<std::size_t>& v) {
+        std::vector<std::size_t> w;
+        for (std::size_t j : v) w.push_back(std::size_t(std::lower_bound(part.variables.begin(), part.variables.end(), j) - part.variables.begin()));
+        return w;
+      };
+      std::vector<std::vector<std::size_t>> pe, pi;
+      for (std::size_t i : part.equations) pe.push_back(local(eqv[i]));
+      for (std::size_t q : part.inequalities) pi.push_back(local(inv[q]));
+      const Solution_plan pp(part.variables.size(), pe, pi);
+      if (pp.structure() != Solution_plan::WELL_CONSTRAINED || !pp.unattached_inequalities().empty() || pp.blocks().empty()) return false;
+      for (std::size_t j : part.variables)
+        pr.local_group.push_back(group[j] == npos ? npos
+                                                  : std::size_t(std::lower_bound(part.groups.begin(), part.groups.end(), group[j]) - part.groups.begin()));
+      for (std::size_t g : part.groups) pr.radix.push_back(radix_c[g]);
+      const std::function<Polynomial_system<NT>(const std::vector<int>&)> make = [&](const std::vector<int>& ch) {
+        std::vector<int> full(radix_c.size(), 0);
+        for (std::size_t k = 0; k < ch.size(); ++k) full[part.groups[k]] = ch[k];
+        return part_system(system_of(build(full)), part);
+      };
+      Subdivision_solver_parameters sp = parameters.solver;
+      if (!sp.interrupt) sp.interrupt = parameters.interrupt;
+      if (parameters.maximal_seconds > 0) {
+        const double left = (std::max)(parameters.maximal_seconds - since(started), 1e-3);
+        sp.maximal_seconds = sp.maximal_seconds > 0 ? (std::min)(sp.maximal_seconds, left) : left;
+      }
+      try {
+        pr.result = solve_with_plan_over_charts<IT, NT>(pp, pr.local_group, pr.radix, make, sp);
+      } catch (const Input_error&) {
+        return false;
+      }
+      st.boxes += pr.result.totals.boxes;
+      st.krawczyk_tests += pr.result.totals.krawczyk_tests;
+      if (!pr.result.totals.diagnosis.empty()) return false;
+      for (const auto& f : pr.result.found)
+        for (const auto& u : f.result.unresolved)
+          if (u.kind == Box_class::UNKNOWN && u.block + 1 < pp.blocks().size()) return false;
+      runs.push_back(std::move(pr));
+    }
+    st.solve_seconds += since(t2);
+    auto t3 = Clock::now();
+    std::map<std::vector<int>, std::unique_ptr<Parametrization>> made;
+    auto parametrization = [&](const std::vector<int>& ch) -> const Parametrization& {
+      auto it = made.find(ch);
+      if (it != made.end()) return *it->second;
+      if (made.size() >= 4096) made.clear();  // (a reference is used before the next call)
+      auto& e = made[ch];
+      e.reset(new Parametrization(c, tree, ch, Rotation_form::QUATERNION_CHARTS, placements));
+      return *e;
+    };
+    // each part's roots, its full chart assignment with the others at 0, and its regions
+    struct Part_root
+    {
+      std::vector<int> charts;
+      std::vector<std::pair<double, double>> parameters;
+      std::vector<double> approximation;
+      bool certified, on_boundary, on_inequality_boundary;
+    };
+    std::vector<std::vector<Part_root>> roots(runs.size());
+    std::vector<Scene_unresolved> regions;
+    std::vector<std::size_t> regions_of(runs.size(), 0);
+    bool cut = false;
+    double assignments = 1;  // full chart assignments with something found
+    for (std::size_t k = 0; k < runs.size(); ++k) {
+      const Independent_part& part = *runs[k].part;
+      assignments *= double(runs[k].result.found.size());
+      for (const auto& f : runs[k].result.found) {
+        std::vector<int> ch(radix_c.size(), 0);
+        for (std::size_t g = 0; g < f.charts.size(); ++g) ch[part.groups[g]] = f.charts[g];
+        for (const auto& r : f.result.roots) {
+          Part_root x{ch, {}, r.approximation, r.certified, r.on_boundary, r.on_inequality_boundary};
+          for (const IT& e : r.enclosure) x.parameters.push_back(CGAL::to_interval(e));
+          roots[k].push_back(std::move(x));
+        }
+        for (const auto& u : f.result.unresolved) {
+          Scene_unresolved x;
+          x.kind = u.kind;
+          x.reason = "independent part " + std::to_string(k + 1) + " of " + std::to_string(runs.size()) + ": " + u.reason;
+          x.charts = ch;
+          x.placements = placements;
+          x.box = s0.box;
+          std::vector<double> centre(n);
+          for (std::size_t l = 0; l < part.variables.size(); ++l) x.box[part.variables[l]] = CGAL::to_interval(u.box[l]);
+          for (std::size_t j = 0; j < n; ++j) centre[j] = 0.5 * x.box[j].first + 0.5 * x.box[j].second;
+          x.at_centre = configuration(c, tree, parametrization(ch), centre, placements);
+          regions.push_back(std::move(x));
+          ++regions_of[k];
+          cut = cut || (u.kind == Box_class::PENDING &&
+                        (u.reason.find("interrupted") != std::string::npos || u.reason.find("time budget") != std::string::npos));
+        }
+      }
+    }
+    auto account = [&]() {
+      st.chart_combinations += per_placement;
+      st.planned_systems += per_placement;
+      for (const auto& r : runs) {
+        st.block_solves += r.result.totals.block_solves;
+        st.block_solves_reused += r.result.totals.block_solves_reused;
+      }
+      st.excluded_by_plan += std::size_t((std::max)(0.0, double(per_placement) - assignments));
+      if (cut) plan_cut = true;
+      else done += per_placement;
+      st.verify_seconds += since(t3);
+    };
+    // a part without roots: no configuration with these placements, whatever the others
+    // (their regions stand for nothing); with regions of its own, every part's regions stay
+    for (std::size_t k = 0; k < runs.size(); ++k)
+      if (roots[k].empty()) {
+        if (regions_of[k] > 0)
+          for (auto& x : regions) out.unresolved.push_back(std::move(x));
+        account();
+        return true;
+      }
+    // A constraint of the scene involves one part's edges only, so the residuals of a product
+    // of the parts' roots are those of its factors: each part's roots are verified with one
+    // root of every other part, the references, chosen to verify (the first root of a part
+    // may be a mirror image).
+    // the configuration of root pick(q) of each part q into v (charts, parameters, poses,
+    // residuals); its size returned
+    auto assemble = [&](const auto& pick, Scene_configuration& v) {
+      std::vector<int> ch(radix_c.size(), 0);
+      std::vector<double> x(n, 0);
+      v.parameters.assign(n, std::make_pair(0.0, 0.0));
+      for (std::size_t q = 0; q < runs.size(); ++q) {
+        const Part_root& a = roots[q][pick(q)];
+        for (std::size_t g : runs[q].part->groups) ch[g] = a.charts[g];
+        for (std::size_t l = 0; l < a.approximation.size(); ++l) {
+          x[runs[q].part->variables[l]] = a.approximation[l];
+          v.parameters[runs[q].part->variables[l]] = a.parameters[l];
+        }
+      }
+      v.placements = placements;
+      v.charts = ch;
+      v.variables = s0.variable_names;
+      return finish_configuration(v, parametrization(ch), x, false);
+    };
+    std::vector<std::size_t> ref(runs.size(), 0);
+    auto evaluate = [&](std::size_t k, std::size_t i, Scene_configuration& v) {
+      return assemble([&](std::size_t q) { return q == k ? i : ref[q]; }, v);
+    };
+    auto failures = [&](const Scene_configuration& v, double size) {
+      std::size_t m = 0;
+      for (const auto& e : v.residuals.entries)
+        if (e.kind == Residual::MIRRORED || e.kind == Residual::UNPLACED || !(e.value <= threshold * (e.kind == Residual::DISTANCE ? size * size : size))) ++m;
+      return m;
+    };
+    {
+      Scene_configuration v;
+      double size = evaluate(0, 0, v);
+      if (!internal::verified(v.residuals, threshold, size)) {
+        for (std::size_t k = 0; k < runs.size(); ++k) {
+          std::size_t best = ref[k], fewest = std::size_t(-1);
+          for (std::size_t i = 0; i < roots[k].size() && fewest > 0; ++i) {
+            Scene_configuration w;
+            const double sw = evaluate(k, i, w);
+            const std::size_t m = failures(w, sw);
+            if (m < fewest) { fewest = m; best = i; }
+          }
+          ref[k] = best;
+        }
+        Scene_configuration w;
+        size = evaluate(0, ref[0], w);
+        if (!internal::verified(w.residuals, threshold, size)) return false;  // some part has no verified root
+      }
+    }
+    // each part's verified roots, one seen from two charts kept once (as add_found() does)
+    std::vector<Scene_part> factors(runs.size());
+    std::vector<std::vector<std::size_t>> kept(runs.size());  // root indices
+    for (std::size_t k = 0; k < runs.size(); ++k) {
+      std::vector<Scene_configuration> seen;
+      std::vector<double> sizes;
+      for (std::size_t i = 0; i < roots[k].size(); ++i) {
+        ++st.roots;
+        Scene_configuration v;
+        v.certified = roots[k][i].certified;
+        const double size = evaluate(k, i, v);
+        if (!internal::verified(v.residuals, threshold, size)) {
+          if (internal::mirror_image(v.residuals, threshold, size)) { ++st.spurious; continue; }
+          Scene_unresolved x;
+          x.kind = Box_class::UNKNOWN;
+          x.reason = "independent part " + std::to_string(k + 1) + " of " + std::to_string(runs.size()) +
+                     ": root of the reduced system not verified in the original system (residual " + std::to_string(v.max_residual) + ")";
+          x.charts = v.charts;
+          x.placements = placements;
+          x.box = v.parameters;
+          x.at_centre = v.configuration;
+          regions.push_back(std::move(x));
+          ++regions_of[k];
+          continue;
+        }
+        bool merged = false;
+        for (std::size_t a = 0; a < seen.size() && !merged; ++a) {
+          const Part_root& o = roots[k][kept[k][a]];
+          if (o.charts == roots[k][i].charts && (o.certified || roots[k][i].certified)) continue;
+          if (internal::configuration_distance(seen[a].configuration, v.configuration) > parameters.merge_tolerance * (std::max)(size, sizes[a])) continue;
+          merged = true;
+          ++st.duplicates;
+          const std::size_t times = factors[k].solutions[a].found + 1;
+          if (!o.certified && roots[k][i].certified) {
+            kept[k][a] = i;
+            seen[a] = v;
+            sizes[a] = size;
+          }
+          factors[k].solutions[a].found = times;
+        }
+        if (merged) continue;
+        kept[k].push_back(i);
+        seen.push_back(v);
+        sizes.push_back(size);
+        factors[k].solutions.emplace_back();
+      }
+      const Independent_part& part = *runs[k].part;
+      Scene_part& f = factors[k];
+      f.placements = placements;
+      f.variable_indices = part.variables;
+      for (std::size_t j : part.variables) f.variables.push_back(s0.variable_names[j]);
+      for (std::size_t g : part.groups) f.bodies.push_back(c.body(tree.edges[g].child).name);
+      for (std::size_t a = 0; a < kept[k].size(); ++a) {
+        const Part_root& r = roots[k][kept[k][a]];
+        Scene_part_solution& x = f.solutions[a];
+        x.certified = r.certified;
+        x.on_chart_border = r.on_boundary;
+        x.on_inequality_boundary = r.on_inequality_boundary;
+        x.charts = r.charts;
+        x.parameters = r.parameters;
+      }
+      f.unresolved = regions_of[k];
+    }
+    for (auto& x : regions) out.unresolved.push_back(std::move(x));
+    CGAL::Gmpz count = 1;
+    for (const auto& f : factors) count *= CGAL::Gmpz(long(f.solutions.size()));
+    // the product, listed in the order of its digits (the last part's the fastest) up to
+    // maximal_listed_configurations and while time is left
+    std::size_t listed = 0;
+    std::vector<std::size_t> d(runs.size(), 0);
+    bool more = count > 0;
+    while (more && listing_stop.empty()) {
+      if (parameters.maximal_listed_configurations > 0 && found.size() >= parameters.maximal_listed_configurations) {
+        listing_stop = "maximal_listed_configurations (" + std::to_string(parameters.maximal_listed_configurations) + ") reached";
+        break;
+      }
+      if (listed % 64 == 0)
+        if (const char* why = stop_reason()) {
+          listing_stop = std::string(std::string(why) == "interrupted" ? "interrupted" : "the time limit reached") +
+                         " while the product of the independent parts was listed";
+          break;
+        }
+      Scene_configuration s;
+      s.certified = true;
+      s.found = 1;
+      for (std::size_t q = 0; q < runs.size(); ++q) {
+        const Scene_part_solution& a = factors[q].solutions[d[q]];
+        s.certified = s.certified && a.certified;
+        s.on_chart_border = s.on_chart_border || a.on_chart_border;
+        s.on_inequality_boundary = s.on_inequality_boundary || a.on_inequality_boundary;
+        s.found *= a.found;
+      }
+      s.coefficient_precision = out.coefficient_precision;
+      const double size = assemble([&](std::size_t q) { return kept[q][d[q]]; }, s);
+      ++listed;
+      if (internal::verified(s.residuals, threshold, size)) found.push_back({std::move(s), size});
+      else ++product_unverified;
+      // the next digits
+      std::size_t q = runs.size();
+      for (;;) {
+        if (q == 0) { more = false; break; }
+        --q;
+        if (++d[q] < factors[q].solutions.size()) break;
+        d[q] = 0;
+      }
+    }
+    not_listed += count - CGAL::Gmpz(long(listed));
+    for (auto& f : factors) out.parts.push_back(std::move(f));
+    account();
+    return true;
+  };
+  report();  // (0 combinations done: on a large scene the first visible step)
   std::optional<std::set<std::vector<int>>> propagated;
   if (!swept && !retry && !one_dof && parameters.chart_propagation && per_placement > 1 && total == per_placement &&
       Tree_system<Traits>::unsupported(c, tree).empty()) {
@@ -1781,6 +2148,19 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
               const double left = (std::max)(parameters.maximal_seconds - since(started), 1e-3);
               sp.maximal_seconds = sp.maximal_seconds > 0 ? (std::min)(sp.maximal_seconds, left) : left;
             }
+            // Independent parts (no equation, inequality or tree edge joins them: one per
+            // plate of stacked platforms): each solved over its own edges' charts, the answer
+            // their product, counted exactly and listed up to maximal_listed_configurations
+            // (issue 28, item 1). A part left with a diagnosis or an early region, or whose
+            // solutions no verified solution of the others completes, falls back to the
+            // plan over every chart below.
+            if (parameters.factor_parts && nc_bodies.empty()) {
+              const std::vector<Independent_part> parts = independent_parts(s0.number_of_variables(), eqv, inv, group);
+              if (parts.size() > 1 && solve_factored(parts, eqv, inv, group, build, s0)) {
+                report();
+                continue;
+              }
+            }
             const std::function<Polynomial_system<NT>(const std::vector<int>&)> make = [&](const std::vector<int>& ch) {
               return system_of(build(ch));
             };
@@ -1898,6 +2278,22 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
     out.limits.push_back(why.str());
   }
   if (!positive.empty()) out.diagnosis = positive;
+  // the first found, up to maximal_listed_configurations; the count exact
+  out.configuration_count = not_listed + CGAL::Gmpz(long(found.size()));
+  if (parameters.maximal_listed_configurations > 0 && found.size() > parameters.maximal_listed_configurations) {
+    found.resize(parameters.maximal_listed_configurations);
+    if (listing_stop.empty())
+      listing_stop = "maximal_listed_configurations (" + std::to_string(parameters.maximal_listed_configurations) + ") reached";
+  }
+  if (!listing_stop.empty()) {
+    std::ostringstream o;
+    o << found.size() << " of " << out.configuration_count << " configurations listed: " << listing_stop;
+    out.listing = o.str();
+  }
+  if (product_unverified > 0)
+    out.limits.push_back(std::to_string(product_unverified) + " configuration(s) of the product of the independent parts failed the"
+                         " residual test in the original system that their parts passed (not listed, not counted): a constraint"
+                         " across two parts the reduced system does not show");
   for (auto& f : found) out.configurations.push_back(std::move(f.s));
   out.curves = internal::join_pieces(pieces, 1e-7);
   // a stable order: by the first configuration's points
@@ -1977,7 +2373,8 @@ Scene_solve_result solve_scene_with_precision(const Rigid_body_collection<Traits
         break;
       }
       // only the uncertain combinations, unless curves are joined across them
-      const bool whole = !r.curves.empty() || !r.diagnosis.empty() || uncertain.empty();
+      // (and a factored answer: its parts are solved again together)
+      const bool whole = !r.curves.empty() || !r.diagnosis.empty() || uncertain.empty() || !r.parts.empty() || !r.listing.empty();
       Scene_retry retry;
       retry.earlier = &r;
       retry.only = uncertain;

@@ -162,6 +162,40 @@ bool identical_systems(const Polynomial_system<NT>& a, const Polynomial_system<N
   return true;
 }
 
+// f renumbered to the variables `local` (increasing; f involves no other variable)
+template <class NT>
+Sparse_polynomial<NT> renumbered(const Sparse_polynomial<NT>& f, const std::vector<std::size_t>& local)
+{
+  Sparse_polynomial<NT> r(local.size());
+  for (const auto& t : f.terms()) {
+    typename Sparse_polynomial<NT>::Exponent e(local.size(), 0);
+    for (std::size_t k = 0; k < local.size(); ++k) e[k] = t.first[local[k]];
+    r.add_term(e, t.second);
+  }
+  return r;
+}
+
+// The equations and inequalities of an independent part of `s` (independent_parts()) in the
+// part's own variables, with their names, box and labels.
+template <class NT>
+Polynomial_system<NT> part_system(const Polynomial_system<NT>& s, const Independent_part& part)
+{
+  Polynomial_system<NT> r;
+  for (std::size_t j : part.variables) {
+    r.variable_names.push_back(j < s.variable_names.size() ? s.variable_names[j] : "x" + std::to_string(j));
+    r.box.push_back(s.box[j]);
+  }
+  for (std::size_t i : part.equations) {
+    r.equations.push_back(renumbered(s.equations[i], part.variables));
+    r.labels.push_back(i < s.labels.size() ? s.labels[i] : std::string());
+  }
+  for (std::size_t q : part.inequalities) {
+    r.inequalities.push_back(renumbered(s.inequalities[q], part.variables));
+    r.inequality_labels.push_back(q < s.inequality_labels.size() ? s.inequality_labels[q] : std::string());
+  }
+  return r;
+}
+
 template <class IT, class NT> struct Plan_run
 {
   typedef Interval_ops<IT> O;
@@ -285,7 +319,7 @@ template <class IT, class NT> struct Plan_run
   {
     auto restrict = [&](const Sparse_polynomial<NT>& f) -> Sparse_polynomial<CT> {
       if constexpr (std::is_same<CT, NT>::value)
-        if (own) return restrict_exact(f, blk.variables);
+        if (own) return renumbered(f, blk.variables);  // (exact: the block has no input)
       if constexpr (std::is_same<CT, IT>::value) return restrict_polynomial<IT>(f, blk.variables, at, known);
       else throw std::logic_error("solve_with_plan: a block with inputs solved with exact coefficients");
     };
@@ -328,17 +362,6 @@ template <class IT, class NT> struct Plan_run
     if (!last) q.tolerance = P.tolerance * 1e-3;
     if (P.maximal_seconds > 0) q.maximal_seconds = (std::max)(P.maximal_seconds - elapsed(), 1e-3);
     return Subdivision_solver<IT>(q).solve(s);
-  }
-  // the same polynomial renumbered to the block's variables (exact: the block has no input)
-  static Sparse_polynomial<NT> restrict_exact(const Sparse_polynomial<NT>& f, const std::vector<std::size_t>& local)
-  {
-    Sparse_polynomial<NT> r(local.size());
-    for (const auto& t : f.terms()) {
-      typename Sparse_polynomial<NT>::Exponent e(local.size(), 0);
-      for (std::size_t k = 0; k < local.size(); ++k) e[k] = t.first[local[k]];
-      r.add_term(e, t.second);
-    }
-    return r;
   }
 
   void go(std::size_t b, bool certified, bool boundary, bool ineq_boundary)

@@ -1292,7 +1292,7 @@ Curve_result<IT> trace_curves_with_plan(const Polynomial_system<NT>& system_in, 
 
   // block 0 on its own variables
   Polynomial_system<NT> s0;
-  auto renumber = [&](const Sparse_polynomial<NT>& f) { return internal::Plan_run<IT, NT>::restrict_exact(f, v0); };
+  auto renumber = [&](const Sparse_polynomial<NT>& f) { return internal::renumbered(f, v0); };
   for (std::size_t j : v0) {
     s0.variable_names.push_back(j < system.variable_names.size() ? system.variable_names[j] : "x" + std::to_string(j));
     s0.box.push_back(system.box[j]);

@@ -366,6 +366,22 @@ if(TARGET rigid_incidence)
                    "-DCHECK_PROGRAM=$<TARGET_FILE:solve_json_check>"
                    "-DCHECK_ARGS=STDOUT_FILE|${_ri_platforms}|--complete|true"
                    -P ${_ri_cli_script})
+  # the factored answer (issue 28, item 1): one part per plate, the count exact (6 x 6) when
+  # the list is cut at 3, the answer complete all the same; --max-listed takes whole numbers
+  add_test(NAME cli_solve_platforms2_listed
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${_ri_platforms}|--json|--max-listed|3" -DEXPECT_RC=0
+                   "-DEXPECT_STDOUT=\"configuration_count\": 36&&\"listing\": \"3 of 36 configurations listed"
+                   "-DSTDOUT_FILE=${CMAKE_CURRENT_BINARY_DIR}/cli_solve_platforms2_listed.json"
+                   "-DCHECK_PROGRAM=$<TARGET_FILE:solve_json_check>"
+                   "-DCHECK_ARGS=STDOUT_FILE|${_ri_platforms}|--complete|true|--solutions|3|--count|36"
+                   -P ${_ri_cli_script})
+  add_test(NAME cli_solve_platforms2_text_parts
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${_ri_platforms}|--max-listed|2" -DEXPECT_RC=0
+                   "-DEXPECT_STDOUT=6 solution\\(s\\) of the part placing&&36 configuration\\(s\\), all certified: complete&&listed: 2 of 36"
+                   -P ${_ri_cli_script})
+  add_test(NAME cli_usage_max_listed
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${_ri_platforms}|--max-listed|-2" -DEXPECT_RC=1
+                   "-DEXPECT_STDERR=--max-listed: '-2' is not a whole number" -P ${_ri_cli_script})
   add_test(NAME cli_solve_platforms2_no_plan
            COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${_ri_platforms}|--no-plan|--max-seconds|3|--json" -DEXPECT_RC=0
                    "-DEXPECT_STDOUT=\"complete\": false&&\"planned_systems\": 0&&time limit of 3 s"
