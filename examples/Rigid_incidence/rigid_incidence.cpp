@@ -40,7 +40,7 @@ static const char* usage_text =
   "  rigid_incidence solve SCENE.json [--json] [--tolerance EPS] [--precision BITS] [--fast]\n"
   "                        [--svg FILE] [--plot A.x,B.z] [--near CONFIG.json] [--max-boxes N]\n"
   "                        [--max-seconds S] [--quiet] [--no-plan] [--no-sweep] [--threads N]\n"
-  "                        [--max-listed N] [--kernel K]\n"
+  "                        [--no-propagation] [--max-listed N] [--kernel K]\n"
   "  rigid_incidence family SCENE.json [--json] [--svg FILE] [--samples K] [--tolerance EPS]\n"
   "                        [--precision BITS] [--max-boxes N] [--kernel K]\n"
   "  rigid_incidence solve-system FILE [--json] [--tolerance EPS] [--precision BITS] [--fast]\n"
@@ -107,7 +107,11 @@ static const char* usage_text =
   "            block (--no-plan: whole, for comparison); a chain of hinges braced by near\n"
   "            distances (256 chart combinations or more) is solved along its tree by one\n"
   "            sweep, nothing expanded (--no-sweep: per chart combination, for comparison);\n"
-  "            a reduced system of independent parts (no equation joins them) is answered\n"
+  "            the charts of a tree of hinges are first chosen by propagating the\n"
+  "            equations along it, and combinations it excludes are never built\n"
+  "            (--no-propagation: every combination, for comparison);\n"
+  "            a reduced system of independent parts (no equation, inequality or tree edge\n"
+  "            joins them) is answered\n"
   "            factored: each part's solutions, the configurations their product, counted\n"
   "            exactly and listed up to --max-listed N (default 10000; 0: all);\n"
   "            --threads N: threads for the\n"
@@ -117,9 +121,9 @@ static const char* usage_text =
   "            incomplete, with exit status 130 or 143; --svg FILE: the configurations side by\n"
   "            side as line drawings; --near CONFIG.json: order the configurations by their\n"
   "            distance to a given one ({\"points\": {label: [x, y, z]}} or a solve --json\n"
-  "            output). --json: {scene, analysis, reduced_system {variables, equations},\n"
+  "            output; the configurations listed: see --max-listed). --json: {scene, analysis, reduced_system {variables, equations},\n"
   "            complete, certified, diagnosis, configuration_count, listing (null, or why\n"
-  "            the list stops), parts [{placements, bodies, variables, count, unresolved,\n"
+  "            the list stops), unlisted_not_certified, parts [{placements, bodies, variables, count, unresolved,\n"
   "            solutions [{certified, charts, found_in_charts, parameters}]}] (a factored\n"
   "            answer; else []), solutions [{certified, parameters, charts,\n"
   "            bodies {name: {rotation, translation}}, points {label: [x, y, z]},\n"
@@ -573,6 +577,9 @@ int main(int argc, char** argv)
     } else if (a == "--no-sweep") {
       if (o.command != "solve") { std::cerr << "rigid_incidence: --no-sweep is an option of solve\n"; return 1; }
       o.solve.no_sweep = true;
+    } else if (a == "--no-propagation") {
+      if (o.command != "solve") { std::cerr << "rigid_incidence: --no-propagation is an option of solve\n"; return 1; }
+      o.solve.no_propagation = true;
     } else if (a == "--fast") {
       if (o.command != "solve" && o.command != "solve-system") { std::cerr << "rigid_incidence: --fast is an option of solve\n"; return 1; }
       o.solve.fast = true;

@@ -40,6 +40,7 @@ struct Solve_options
   bool fast = false;
   bool no_plan = false;        // --no-plan: each reduced system solved whole (for comparison)
   bool no_sweep = false;       // --no-sweep: never solved along the tree by a sweep (for comparison)
+  bool no_propagation = false; // --no-propagation: every chart combination built (for comparison)
   std::size_t max_boxes = 0;   // 0: the solver's default
   std::string svg, near;
   std::string plot;  // --plot A.x,B.z: the coordinates plotted against each other for curves
@@ -463,6 +464,7 @@ RI::Scene_solve_result run(const RI::Scene& scene, const RI::Rigid_body_collecti
   p.maximal_listed_configurations = o.max_listed;
   p.solve_with_plan = !o.no_plan;
   p.sweep = !o.no_sweep;
+  p.chart_propagation = !o.no_propagation;
   p.interrupt = &interrupted;
   Progress_line line;
   if (!o.quiet && isatty(2)) p.progress = std::ref(line);
@@ -533,6 +535,7 @@ int solve(const RI::Scene& scene, const RI::Rigid_body_collection<Traits>& input
     j["limits"] = r.limits;
     j["configuration_count"] = count_json(r.configuration_count);
     j["listing"] = r.listing.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(r.listing);
+    j["unlisted_not_certified"] = r.unlisted_not_certified;
     nlohmann::ordered_json parts = nlohmann::ordered_json::array();
     for (const auto& q : r.parts) {
       nlohmann::ordered_json sols = nlohmann::ordered_json::array();
@@ -685,6 +688,11 @@ int solve(const RI::Scene& scene, const RI::Rigid_body_collection<Traits>& input
   std::size_t uncertified = 0, singular = 0;
   for (const auto& x : r.configurations) { uncertified += !x.certified; singular += x.singular; }
   if (uncertified) std::cout << " (" << uncertified << " not certified)";
+  if (r.unlisted_not_certified) std::cout << " (" << r.unlisted_not_certified << " not listed and not certified)";
+  std::size_t part_uncertified = 0;  // (each in every product it enters)
+  for (const auto& q : r.parts)
+    for (const auto& x : q.solutions) part_uncertified += !x.certified;
+  if (part_uncertified) std::cout << " (" << part_uncertified << " part solution(s) not certified)";
   if (singular) std::cout << " (" << singular << " singular)";
   if (r.complete()) std::cout << ", all certified: complete\n";
   else std::cout << "; the result is NOT complete" << (r.unresolved.empty() ? "" : " (unresolved regions below)") << "\n";

@@ -262,6 +262,17 @@ static void along_the_plan()
     CHECK(five.result.configurations.size() == 5 && five.result.configuration_count == f.configuration_count && five.result.complete() &&
               !five.result.listing.empty() && among(five.result, f, labels),
           "two platforms, 5 listed: " << five.result.configurations.size() << " listed of " << five.result.configuration_count);
+    // a part solution that is not certified, listed in no product, or a dropped configuration
+    // that is not certified: the answer is not complete
+    {
+      RI::Scene_solve_result x = five.result;
+      CHECK(x.complete(), "two platforms, 5 listed: complete");
+      x.parts.back().solutions.back().certified = false;
+      CHECK(!x.complete(), "a part solution not certified, in no listed product: complete() says not complete");
+      RI::Scene_solve_result y = five.result;
+      y.unlisted_not_certified = 1;
+      CHECK(!y.complete(), "a configuration not listed and not certified: complete() says not complete");
+    }
     // the same cut where the answer is not factored: the first five found, the count exact
     const Outcome five_listed = solve(platforms, true, 0, nullptr, true, true, [](RI::Scene_solve_parameters& p) {
       p.maximal_listed_configurations = 5;
@@ -343,10 +354,56 @@ static void merged_part_placements()
                               << alike << " pairs alike, complete " << best.complete);
 }
 
+// Three stacked platforms of another seed (scripts/make_scene_family.py platforms 3 --seed 2,
+// 8 x 2 x 8 assembly modes): the factored answer against the plan over every chart assignment
+// listed, the planted configuration among both, the count the parts' product.
+static void factored_three_platforms()
+{
+  const std::string td = RIGID_INCIDENCE_TEST_DATA_DIR;
+  const RI::Scene scene = read(td + "/platforms3_seed2.json");
+  const auto labels = point_labels(scene);
+  std::map<std::string, std::array<double, 3>> planted;
+  {
+    std::ifstream in(td + "/platforms3_seed2_planted.json");
+    const nlohmann::json j = nlohmann::json::parse(in);
+    for (const auto& e : j.at("points").items()) planted[e.key()] = {e.value()[0].get<double>(), e.value()[1].get<double>(), e.value()[2].get<double>()};
+  }
+  auto has_planted = [&](const RI::Scene_solve_result& r) {
+    for (const auto& x : r.configurations) {
+      double d = 0;
+      for (const auto& p : planted)
+        for (std::size_t k = 0; k < 3; ++k) d = (std::max)(d, std::abs(x.configuration.point(p.first)[k] - p.second[k]));
+      if (d < 1e-6) return true;
+    }
+    return false;
+  };
+  const Outcome f = solve(scene);
+  const Outcome l = solve(scene, true, 0, nullptr, true, true, [](RI::Scene_solve_parameters& p) { p.factor_parts = false; });
+  CGAL::Gmpz product = 1;
+  std::string counts;
+  for (const auto& q : f.result.parts) {
+    product *= CGAL::Gmpz(long(q.solutions.size()));
+    counts += (counts.empty() ? "" : " x ") + std::to_string(q.solutions.size());
+  }
+  std::cout << "three platforms (seed 2): factored " << counts << " = " << f.result.configuration_count << " in "
+            << f.result.statistics.block_solves << " block solves; listed from every chart assignment: "
+            << l.result.configurations.size() << " in " << l.result.statistics.block_solves << " block solves\n";
+  CHECK(f.result.parts.size() == 3 && f.result.complete() && l.result.complete() && l.result.parts.empty(),
+        "three platforms: 3 parts, complete both ways");
+  CHECK(f.result.configuration_count == product && f.result.configurations.size() == l.result.configurations.size() &&
+            CGAL::Gmpz(long(l.result.configurations.size())) == l.result.configuration_count && among(f.result, l.result, labels) &&
+            among(l.result, f.result, labels),
+        "three platforms: the factored answer (" << f.result.configuration_count << ") is the listed one (" << l.result.configurations.size() << ")");
+  CHECK(has_planted(f.result) && has_planted(l.result), "three platforms: the planted configuration among both answers");
+  for (const auto& x : f.result.configurations)
+    CHECK(x.certified && x.max_relative_residual < 1e-9, "three platforms: a factored configuration not certified or not holding");
+}
+
 int main()
 {
   merged_part_placements();
   along_the_plan();
+  factored_three_platforms();
   const std::string d = RIGID_INCIDENCE_DATA_DIR;
   // the paper's scenes: 3 hinges (2 charts each), one block of 3 (their equations couple all)
   for (const char* f : {"tetra", "tetra_i", "quad", "quad_distinct", "pent", "flat_hinges"}) {

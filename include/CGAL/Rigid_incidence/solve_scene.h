@@ -386,12 +386,17 @@ struct Scene_solve_result
   /// `Scene_solve_parameters::maximal_coefficient_precision`), each as "53 bits: why it was
   /// not enough (coefficients W wide, T s)"
   std::vector<std::string> precision_history;
-  /// every configuration certified, nothing unresolved and no limit reached
+  /// configurations counted but not listed (see `listing`) that are not certified
+  std::size_t unlisted_not_certified = 0;
+  /// every configuration certified (listed or not: the parts' solutions too), nothing
+  /// unresolved and no limit reached
   bool complete() const
   {
-    if (fast || !unresolved.empty() || !diagnosis.empty() || !limits.empty()) return false;
+    if (fast || !unresolved.empty() || !diagnosis.empty() || !limits.empty() || unlisted_not_certified > 0) return false;
     for (const auto& c : configurations) if (!c.certified) return false;
     for (const auto& c : curves) if (!c.certified) return false;
+    for (const auto& q : parts)
+      for (const auto& x : q.solutions) if (!x.certified) return false;
     return true;
   }
 };
@@ -457,8 +462,10 @@ struct Scene_solve_work
   /// the variables of each block of the reduced system's solution plan (`Solution_plan`), in
   /// the order they would be solved; one block: the system is solved whole
   std::vector<std::size_t> block_sizes;
-  /// the parts of the reduced system no equation links (the scene's configurations would be
-  /// the product of theirs)
+  /// the parts of the reduced system no equation (in chart 0) or tree edge links
+  /// (`independent_parts()`): the scene's configurations are the product of theirs, and
+  /// `solve_scene()` answers factored where the equations of every chart and the orientation
+  /// inequalities keep them apart too (`Scene_solve_parameters::factor_parts`)
   std::size_t independent_parts = 0;
   /// chart_combinations x placement_combinations (saturating at SIZE_MAX): the most reduced
   /// systems a full solve builds and subdivides (fewer when two bodies' placements put a shared
@@ -500,7 +507,13 @@ Scene_solve_work scene_solve_work(const Rigid_body_collection<Traits>& c, const 
   for (const auto& e : r.equations()) support.push_back(e.variables);
   const Solution_plan plan(w.variables, support);
   for (const auto& b : plan.blocks()) w.block_sizes.push_back(b.variables.size());
-  w.independent_parts = independent_parts(w.variables, support).size();
+  std::vector<std::size_t> group(w.variables, std::size_t(-1));
+  const auto& edges = r.parametrization().edges();
+  for (std::size_t k = 0; k < edges.size(); ++k) {
+    for (std::size_t v : edges[k].rotation) group[v] = k;
+    for (std::size_t v : edges[k].translation) group[v] = k;
+  }
+  w.independent_parts = independent_parts(w.variables, support, {}, group).size();
   return w;
 }
 
@@ -1705,8 +1718,9 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
   // The factored answer of the placement combination `placements` (see its call in the loop
   // below): `parts` of the system s0 of chart 0, `eqv` and `inv` the union of the supports
   // over the charts, `group` the chart group (tree edge) of each variable, `build` the
-  // reduced system of a full chart assignment. False, with nothing recorded, where it does
-  // not apply (the plan over every chart then solves the combination).
+  // reduced system of a full chart assignment. False, with nothing recorded in the answer
+  // (the work it did counted in the statistics: boxes, seconds), where it does not apply: the
+  // plan over every chart then solves the combination.
   CGAL::Gmpz not_listed = 0;     // configurations a factored answer counted and did not list
   std::string listing_stop;      // why a factored answer's expansion stopped (empty: it did not)
   std::size_t product_unverified = 0;  // listed products a residual refused (see below)
@@ -1758,14 +1772,22 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
       try {
         pr.result = solve_with_plan_over_charts<IT, NT>(pp, pr.local_group, pr.radix, make, sp);
       } catch (const Input_error&) {
+        st.solve_seconds += since(t2);
         return false;
       }
       st.boxes += pr.result.totals.boxes;
       st.krawczyk_tests += pr.result.totals.krawczyk_tests;
-      if (!pr.result.totals.diagnosis.empty()) return false;
+      bool apart = pr.result.totals.diagnosis.empty();
+      // (an early region stands for every chart of the later blocks; a possible multiple root
+      // is tried as a configuration by process(): both left to the plan over every chart)
       for (const auto& f : pr.result.found)
         for (const auto& u : f.result.unresolved)
-          if (u.kind == Box_class::UNKNOWN && u.block + 1 < pp.blocks().size()) return false;
+          apart = apart && !(u.kind == Box_class::UNKNOWN &&
+                             (u.block + 1 < pp.blocks().size() || u.reason.rfind("possible multiple root", 0) == 0));
+      if (!apart) {
+        st.solve_seconds += since(t2);
+        return false;
+      }
       runs.push_back(std::move(pr));
     }
     st.solve_seconds += since(t2);
@@ -1790,7 +1812,8 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
     std::vector<std::vector<Part_root>> roots(runs.size());
     std::vector<Scene_unresolved> regions;
     std::vector<std::size_t> regions_of(runs.size(), 0);
-    bool cut = false;
+    std::vector<char> cut_in(runs.size(), 0);  // a part's solve cut by the time limit or the interrupt
+    bool cut = false;  // (set from the regions recorded)
     double assignments = 1;  // full chart assignments with something found
     for (std::size_t k = 0; k < runs.size(); ++k) {
       const Independent_part& part = *runs[k].part;
@@ -1816,8 +1839,9 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
           x.at_centre = configuration(c, tree, parametrization(ch), centre, placements);
           regions.push_back(std::move(x));
           ++regions_of[k];
-          cut = cut || (u.kind == Box_class::PENDING &&
-                        (u.reason.find("interrupted") != std::string::npos || u.reason.find("time budget") != std::string::npos));
+          if (u.kind == Box_class::PENDING &&
+              (u.reason.find("interrupted") != std::string::npos || u.reason.find("time budget") != std::string::npos))
+            cut_in[k] = 1;
         }
       }
     }
@@ -1833,12 +1857,18 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
       else done += per_placement;
       st.verify_seconds += since(t3);
     };
-    // a part without roots: no configuration with these placements, whatever the others
-    // (their regions stand for nothing); with regions of its own, every part's regions stay
+    // a part without roots nor regions: no configuration with these placements, whatever the
+    // others left (their regions stand for nothing); a part without roots but with regions:
+    // every part's regions stay (nothing to list)
+    for (std::size_t k = 0; k < runs.size(); ++k)
+      if (roots[k].empty() && regions_of[k] == 0) {
+        account();
+        return true;
+      }
+    for (std::size_t k = 0; k < runs.size(); ++k) cut = cut || cut_in[k];
     for (std::size_t k = 0; k < runs.size(); ++k)
       if (roots[k].empty()) {
-        if (regions_of[k] > 0)
-          for (auto& x : regions) out.unresolved.push_back(std::move(x));
+        for (auto& x : regions) out.unresolved.push_back(std::move(x));
         account();
         return true;
       }
@@ -1891,7 +1921,10 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
         }
         Scene_configuration w;
         size = evaluate(0, ref[0], w);
-        if (!internal::verified(w.residuals, threshold, size)) return false;  // some part has no verified root
+        if (!internal::verified(w.residuals, threshold, size)) {  // some part has no verified root
+          st.verify_seconds += since(t3);
+          return false;
+        }
       }
     }
     // each part's verified roots, one seen from two charts kept once (as add_found() does)
@@ -2142,24 +2175,28 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
               for (std::size_t v : edges[k].rotation) group[v] = k;
               for (std::size_t v : edges[k].translation) group[v] = k;
             }
+            // Independent parts (no equation, inequality or tree edge joins them: one per
+            // plate of stacked platforms): each solved over its own edges' charts, the answer
+            // their product, counted exactly and listed up to maximal_listed_configurations
+            // (issue 28, item 1). A part left with a diagnosis, an early region or a possible
+            // multiple root, or whose solutions no verified solution of the others completes,
+            // falls back to the plan over every chart below, with the time then left.
+            if (parameters.factor_parts && nc_bodies.empty()) {
+              const std::vector<Independent_part> parts = independent_parts(s0.number_of_variables(), eqv, inv, group);
+              if (parts.size() > 1) {
+                if (solve_factored(parts, eqv, inv, group, build, s0)) {
+                  report();
+                  continue;
+                }
+                if ((stopped = stop_reason())) break;
+                t2 = Clock::now();  // (the attempt counted its own seconds)
+              }
+            }
             Subdivision_solver_parameters sp = parameters.solver;
             if (!sp.interrupt) sp.interrupt = parameters.interrupt;
             if (parameters.maximal_seconds > 0) {
               const double left = (std::max)(parameters.maximal_seconds - since(started), 1e-3);
               sp.maximal_seconds = sp.maximal_seconds > 0 ? (std::min)(sp.maximal_seconds, left) : left;
-            }
-            // Independent parts (no equation, inequality or tree edge joins them: one per
-            // plate of stacked platforms): each solved over its own edges' charts, the answer
-            // their product, counted exactly and listed up to maximal_listed_configurations
-            // (issue 28, item 1). A part left with a diagnosis or an early region, or whose
-            // solutions no verified solution of the others completes, falls back to the
-            // plan over every chart below.
-            if (parameters.factor_parts && nc_bodies.empty()) {
-              const std::vector<Independent_part> parts = independent_parts(s0.number_of_variables(), eqv, inv, group);
-              if (parts.size() > 1 && solve_factored(parts, eqv, inv, group, build, s0)) {
-                report();
-                continue;
-              }
             }
             const std::function<Polynomial_system<NT>(const std::vector<int>&)> make = [&](const std::vector<int>& ch) {
               return system_of(build(ch));
@@ -2281,6 +2318,13 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
   // the first found, up to maximal_listed_configurations; the count exact
   out.configuration_count = not_listed + CGAL::Gmpz(long(found.size()));
   if (parameters.maximal_listed_configurations > 0 && found.size() > parameters.maximal_listed_configurations) {
+    // (those not certified among the dropped ones keep the answer incomplete, and a retry at
+    // more bits solves their combinations again)
+    for (std::size_t i = parameters.maximal_listed_configurations; i < found.size(); ++i)
+      if (!found[i].s.certified) {
+        ++out.unlisted_not_certified;
+        if (uncertain) uncertain->insert(combination_of(found[i].s.placements, found[i].s.charts));
+      }
     found.resize(parameters.maximal_listed_configurations);
     if (listing_stop.empty())
       listing_stop = "maximal_listed_configurations (" + std::to_string(parameters.maximal_listed_configurations) + ") reached";
@@ -2322,6 +2366,9 @@ inline bool precision_may_help(const Scene_solve_result& r)
   for (const auto& u : r.unresolved) if (u.kind == Box_class::UNKNOWN) return true;
   for (const auto& x : r.configurations) if (!x.certified) return true;
   for (const auto& c : r.curves) if (!c.certified) return true;
+  if (r.unlisted_not_certified > 0) return true;
+  for (const auto& q : r.parts)
+    for (const auto& x : q.solutions) if (!x.certified) return true;
   return false;
 }
 
@@ -2373,7 +2420,7 @@ Scene_solve_result solve_scene_with_precision(const Rigid_body_collection<Traits
         break;
       }
       // only the uncertain combinations, unless curves are joined across them
-      // (and a factored answer: its parts are solved again together)
+      // (and a factored or cut answer: solved again whole, its parts factored again)
       const bool whole = !r.curves.empty() || !r.diagnosis.empty() || uncertain.empty() || !r.parts.empty() || !r.listing.empty();
       Scene_retry retry;
       retry.earlier = &r;

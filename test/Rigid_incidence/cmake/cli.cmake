@@ -379,6 +379,18 @@ if(TARGET rigid_incidence)
            COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${_ri_platforms}|--max-listed|2" -DEXPECT_RC=0
                    "-DEXPECT_STDOUT=6 solution\\(s\\) of the part placing&&36 configuration\\(s\\), all certified: complete&&listed: 2 of 36"
                    -P ${_ri_cli_script})
+  # the charts chosen by propagation along the tree of hinges, and --no-propagation (every
+  # combination built: the same configurations)
+  add_test(NAME cli_solve_chain5_propagation
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${CMAKE_CURRENT_LIST_DIR}/../data/chain5.json" -DEXPECT_RC=0
+                   "-DEXPECT_STDOUT=4 chart combinations never built \\(excluded by propagation" -P ${_ri_cli_script})
+  add_test(NAME cli_solve_chain5_no_propagation
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${CMAKE_CURRENT_LIST_DIR}/../data/chain5.json|--no-propagation|--json" -DEXPECT_RC=0
+                   "-DEXPECT_STDOUT=\"excluded_by_propagation\": 0,"
+                   "-DSTDOUT_FILE=${CMAKE_CURRENT_BINARY_DIR}/cli_solve_chain5_no_propagation.json"
+                   "-DCHECK_PROGRAM=$<TARGET_FILE:solve_json_check>"
+                   "-DCHECK_ARGS=STDOUT_FILE|${CMAKE_CURRENT_LIST_DIR}/../data/chain5.json|--complete|true|--solutions|2"
+                   -P ${_ri_cli_script})
   add_test(NAME cli_usage_max_listed
            COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${_ri_platforms}|--max-listed|-2" -DEXPECT_RC=1
                    "-DEXPECT_STDERR=--max-listed: '-2' is not a whole number" -P ${_ri_cli_script})
