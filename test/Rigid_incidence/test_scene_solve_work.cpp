@@ -117,6 +117,16 @@ static double distance(const RI::Configuration& a, const RI::Configuration& b, c
   return d;
 }
 
+// the planted points a scene generator wrote ({"points": {label: [x, y, z]}})
+static std::map<std::string, std::array<double, 3>> read_planted(const std::string& file)
+{
+  std::map<std::string, std::array<double, 3>> planted;
+  std::ifstream in(file);
+  const nlohmann::json j = nlohmann::json::parse(in);
+  for (const auto& e : j.at("points").items()) planted[e.key()] = {e.value()[0].get<double>(), e.value()[1].get<double>(), e.value()[2].get<double>()};
+  return planted;
+}
+
 static std::vector<std::string> point_labels(const RI::Scene& s)
 {
   std::set<std::string> l;
@@ -186,12 +196,7 @@ static void along_the_plan()
   }
   const RI::Scene platforms = read(td + "/platforms2.json");
   const auto labels = point_labels(platforms);
-  std::map<std::string, std::array<double, 3>> planted;
-  {
-    std::ifstream in(td + "/platforms2_planted.json");
-    const nlohmann::json j = nlohmann::json::parse(in);
-    for (const auto& e : j.at("points").items()) planted[e.key()] = {e.value()[0].get<double>(), e.value()[1].get<double>(), e.value()[2].get<double>()};
-  }
+  const auto planted = read_planted(td + "/platforms2_planted.json");
   const Outcome full = solve(platforms);
   {
     const auto& r = full.result;
@@ -362,12 +367,7 @@ static void factored_three_platforms()
   const std::string td = RIGID_INCIDENCE_TEST_DATA_DIR;
   const RI::Scene scene = read(td + "/platforms3_seed2.json");
   const auto labels = point_labels(scene);
-  std::map<std::string, std::array<double, 3>> planted;
-  {
-    std::ifstream in(td + "/platforms3_seed2_planted.json");
-    const nlohmann::json j = nlohmann::json::parse(in);
-    for (const auto& e : j.at("points").items()) planted[e.key()] = {e.value()[0].get<double>(), e.value()[1].get<double>(), e.value()[2].get<double>()};
-  }
+  const auto planted = read_planted(td + "/platforms3_seed2_planted.json");
   auto has_planted = [&](const RI::Scene_solve_result& r) {
     for (const auto& x : r.configurations) {
       double d = 0;
