@@ -26,7 +26,7 @@ LADDER = {
     "ring": [6, 7, 8, 9, 10, 11, 12, 14, 16],
     "tree": [3, 5, 7, 9, 11, 13, 15, 17, 21, 25, 31],
     "molecule": [7, 8, 9, 10, 11, 12, 13, 14, 16, 18, 20],
-    "platforms": [1, 2, 3, 4],
+    "platforms": [1, 2, 3, 4, 5, 6, 7, 8],
     "strip": [2, 4, 6, 8, 10, 12, 14, 16],
 }
 # issue 28's targets: size -> seconds (complete, every configuration certified, the planted one
