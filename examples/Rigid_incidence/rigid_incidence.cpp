@@ -40,7 +40,8 @@ static const char* usage_text =
   "  rigid_incidence solve SCENE.json [--json] [--tolerance EPS] [--precision BITS] [--fast]\n"
   "                        [--svg FILE] [--plot A.x,B.z] [--near CONFIG.json] [--max-boxes N]\n"
   "                        [--max-seconds S] [--quiet] [--no-plan] [--no-sweep] [--threads N]\n"
-  "                        [--no-propagation] [--max-listed N] [--kernel K]\n"
+  "                        [--no-propagation] [--no-consistency] [--max-listed N]\n"
+  "                        [--kernel K]\n"
   "  rigid_incidence family SCENE.json [--json] [--svg FILE] [--samples K] [--tolerance EPS]\n"
   "                        [--precision BITS] [--max-boxes N] [--kernel K]\n"
   "  rigid_incidence solve-system FILE [--json] [--tolerance EPS] [--precision BITS] [--fast]\n"
@@ -105,8 +106,11 @@ static const char* usage_text =
   "            a progress line on standard error when it is a terminal (--quiet: none);\n"
   "            a reduced system of several blocks (its solution plan) is solved block after\n"
   "            block (--no-plan: whole, for comparison); a chain of hinges braced by near\n"
-  "            distances (256 chart combinations or more) is solved along its tree by one\n"
+  "            distances (64 chart combinations or more) is solved along its tree by one\n"
   "            sweep, nothing expanded (--no-sweep: per chart combination, for comparison);\n"
+  "            before the sweep and the propagation, arc consistency keeps the parts of\n"
+  "            each hinge's circle the equations in two hinges allow (--no-consistency:\n"
+  "            none, for comparison);\n"
   "            the charts of a tree of hinges are first chosen by propagating the\n"
   "            equations along it, and combinations it excludes are never built\n"
   "            (--no-propagation: every combination, for comparison);\n"
@@ -577,6 +581,9 @@ int main(int argc, char** argv)
     } else if (a == "--no-sweep") {
       if (o.command != "solve") { std::cerr << "rigid_incidence: --no-sweep is an option of solve\n"; return 1; }
       o.solve.no_sweep = true;
+    } else if (a == "--no-consistency") {
+      if (o.command != "solve") { std::cerr << "rigid_incidence: --no-consistency is an option of solve\n"; return 1; }
+      o.solve.no_consistency = true;
     } else if (a == "--no-propagation") {
       if (o.command != "solve") { std::cerr << "rigid_incidence: --no-propagation is an option of solve\n"; return 1; }
       o.solve.no_propagation = true;

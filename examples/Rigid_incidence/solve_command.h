@@ -41,6 +41,7 @@ struct Solve_options
   bool no_plan = false;        // --no-plan: each reduced system solved whole (for comparison)
   bool no_sweep = false;       // --no-sweep: never solved along the tree by a sweep (for comparison)
   bool no_propagation = false; // --no-propagation: every chart combination built (for comparison)
+  bool no_consistency = false; // --no-consistency: no arc consistency along the tree (for comparison)
   std::size_t max_boxes = 0;   // 0: the solver's default
   std::string svg, near;
   std::string plot;  // --plot A.x,B.z: the coordinates plotted against each other for curves
@@ -84,7 +85,9 @@ inline nlohmann::ordered_json work_json(const RI::Scene_solve_work& w)
   for (const auto& p : w.placements) placements.push_back({{"body", p.first}, {"placements", p.second}});
   return {{"chart_combinations", w.chart_combinations}, {"placement_combinations", w.placement_combinations},
           {"placements", placements}, {"systems", w.systems()}, {"variables", w.variables}, {"equations", w.equations},
-          {"block_sizes", w.block_sizes}, {"independent_parts", w.independent_parts}};
+          {"block_sizes", w.block_sizes}, {"independent_parts", w.independent_parts},
+          {"sweep", w.sweep_driver.empty() ? nlohmann::ordered_json(nullptr)
+                                           : nlohmann::ordered_json{{"driver", w.sweep_driver}, {"steps", w.sweep_steps}, {"checks", w.sweep_checks}}}};
 }
 inline volatile std::sig_atomic_t signal_received = 0;
 inline std::atomic<long long> first_signal_ns{0};
@@ -465,6 +468,7 @@ RI::Scene_solve_result run(const RI::Scene& scene, const RI::Rigid_body_collecti
   p.solve_with_plan = !o.no_plan;
   p.sweep = !o.no_sweep;
   p.chart_propagation = !o.no_propagation;
+  if (o.no_consistency) p.consistency_cells = 0;
   p.interrupt = &interrupted;
   Progress_line line;
   if (!o.quiet && isatty(2)) p.progress = std::ref(line);

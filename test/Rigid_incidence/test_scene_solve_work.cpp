@@ -458,6 +458,34 @@ int main()
     CHECK(w.variables == 4 && w.equations == 2 && w.block_sizes == (std::vector<std::size_t>{3, 1}) && w.independent_parts == 1,
           "bar_end: " << RI::internal::describe_work(w));
   }
+  // a tree of hinges: its work read off its Tree_system, never expanded, against the expanded
+  // reduced system's (variables, equations, charts, blocks, parts); the sweep said where the
+  // solve would take it (64 chart combinations or more: the chain of 7, not the chain of 5)
+  for (const char* name : {"chain5.json", "chain7.json", "ring7.json", "two_pairs_of_hinges.json"}) {
+    const RI::Scene scene = read(std::string(RIGID_INCIDENCE_TEST_DATA_DIR) + "/" + name);
+    RI::Rigid_body_collection<Traits> c = RI::standardize(RI::make_collection<Traits>(scene));
+    RI::Incidence_tree t = RI::optimal_incidence_tree(c);
+    RI::Well_formed_selection wf = RI::select_well_formed_incidences(c, t);
+    CHECK(RI::Tree_system<Traits>::unsupported(c, t).empty(), name << ": not a tree of hinges");
+    const RI::Scene_solve_work w = RI::scene_solve_work(c, t, wf);
+    CGAL::Protect_FPU_rounding<true> guard;
+    const RI::Reduced_system<Traits, CGAL::Interval_nt<false>> r(c, t, wf);
+    std::size_t charts = 1;
+    for (const auto& e : r.parametrization().edges()) charts *= std::size_t(e.number_of_charts);
+    std::vector<std::vector<std::size_t>> support;
+    for (const auto& e : r.equations()) support.push_back(e.variables);
+    std::vector<std::size_t> blocks;
+    for (const auto& b : RI::Solution_plan(r.number_of_variables(), support).blocks()) blocks.push_back(b.variables.size());
+    CHECK(w.variables == r.number_of_variables() && w.equations == r.number_of_equations() && w.chart_combinations == charts &&
+              w.block_sizes == blocks,
+          name << ": " << RI::internal::describe_work(w) << "; expanded: " << r.number_of_variables() << " variables, " << r.number_of_equations()
+               << " equations, " << charts << " chart combinations");
+    const bool swept = std::string(name) == "chain7.json";
+    CHECK(swept == !w.sweep_driver.empty() && (!swept || (w.sweep_steps == 5 && w.sweep_checks == 1)) &&
+              (RI::internal::describe_work(w).find("one sweep") != std::string::npos) == swept,
+          name << ": " << RI::internal::describe_work(w));
+    std::cout << name << ": " << RI::internal::describe_work(w) << "\n";
+  }
   if (failures) { std::cerr << failures << " failure(s)\n"; return 1; }
   std::cout << "all scene_solve_work checks passed\n";
   return 0;

@@ -14,11 +14,15 @@
 //   hinged tetrahedra (6, 2 and 2 configurations) and on the ring of 7;
 // - solve_scene() with and without the chart propagation (Scene_solve_parameters::
 //   chart_propagation): the same configurations, point for point, and the combinations it
-//   excludes never built (two pairs of hinged bodies, each combination alone: 4 of 16;
-//   chains of 4 and 6: none);
+//   excludes never built (two pairs of hinged bodies, each combination alone: 7 of 16; chains
+//   of 4 and 6: 2 of 8 and 26 of 32, with arc consistency first);
 // - the sweep (a chain's driver hinge bisected, the others found in turn) against the same
 //   expanded answer, in solve_tree_system() and in solve_scene() (point for point), and the
 //   sweep cut by a time limit (not complete, saying why); sweep orders of hand-made supports;
+// - arc consistency (Tree_solver_parameters::consistency_cells) against none: the same roots,
+//   each in the cells kept, fewer boxes; its clip by hand at cell borders; a bad cell count
+//   refused; the chain of 7 (64 combinations: swept by default) point for point against the
+//   expanded systems, the planted configuration among its configurations;
 // - a box budget: the rest pending, the result not complete;
 // - a scene outside its reach (tetra: bodies known by distances in the covering set): refused,
 //   saying why.
@@ -29,6 +33,8 @@
 #include <CGAL/Rigid_incidence.h>
 #include <CGAL/Rigid_incidence/IO/read_scene.h>
 #include <CGAL/Rigid_incidence/solve_tree_system.h>
+
+#include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <fstream>
@@ -271,6 +277,80 @@ static void check_sweep_scene(const std::string& name, const Loaded& l)
   std::cout << name << ": " << a.configurations.size() << " configurations by the sweep (" << a.statistics.boxes << " boxes), as expanded\n";
 }
 
+// arc consistency against none: the same roots (root for root), every root inside the cells
+// kept, no more boxes
+static void check_consistency(const std::string& name, const Loaded& l, bool sweep)
+{
+  RI::Tree_system<Traits> S(l.c, l.t, l.wf);
+  RI::Tree_solver_parameters on, off;
+  on.sweep = off.sweep = sweep;
+  off.consistency_cells = 0;
+  const RI::Tree_solve_result a = RI::solve_tree_system(S, on), b = RI::solve_tree_system(S, off);
+  const std::size_t n = S.number_of_variables();
+  CHECK(a.complete() && b.complete(), name << ": not complete with or without arc consistency");
+  CHECK(b.consistent_fraction.empty() && a.consistent_fraction.size() == n, name << ": " << a.consistent_fraction.size() << " fractions kept for "
+                                                                                    << n << " hinges");
+  double least = 1;
+  for (double f : a.consistent_fraction) {
+    CHECK(f > 0 && f <= 1, name << ": a fraction kept of " << f);
+    least = (std::min)(least, f);
+  }
+  CHECK(least < 1, name << ": arc consistency kept every cell of every hinge");
+  CHECK(a.roots.size() == b.roots.size(), name << ": " << a.roots.size() << " roots with arc consistency, " << b.roots.size() << " without");
+  for (const auto& x : b.roots) {
+    std::size_t seen = 0;
+    for (const auto& y : a.roots) seen += x.charts == y.charts && shape_distance(x.approximation, y.approximation) < 1e-9;
+    CHECK(seen == 1, name << ": a root without arc consistency found " << seen << " times with it");
+  }
+  CHECK(a.statistics.boxes <= b.statistics.boxes, name << ": " << a.statistics.boxes << " boxes with arc consistency, " << b.statistics.boxes << " without");
+  // the cells kept hold every root (the domains computed again, as the solve does)
+  CGAL::Protect_FPU_rounding<true> guard;
+  const RI::internal::Tree_domains d = RI::internal::tree_domains(S, on.consistency_cells, {});
+  for (const auto& x : b.roots)
+    for (std::size_t v = 0; v < n; ++v) {
+      IT e = x.enclosure[v];
+      CHECK(d.clip(v, x.charts[v], e) && e.inf() == x.enclosure[v].inf() && e.sup() == x.enclosure[v].sup(),
+            name << ": hinge " << v << " of a root, " << x.enclosure[v] << " in chart " << x.charts[v] << ", outside the cells kept");
+    }
+  std::cout << name << (sweep ? " (sweep)" : " (branch and prune)") << ": arc consistency keeps " << 100 * least
+            << " % of a hinge's circle at least; " << a.statistics.boxes << " boxes against " << b.statistics.boxes << " (" << a.consistency_seconds
+            << " s of it)\n";
+}
+
+// Tree_domains::clip by hand: cell borders belong to both cells
+static void check_clip()
+{
+  RI::internal::Tree_domains d;
+  d.cells = 8;  // cell i = [-1 + i/4, -1 + (i+1)/4]
+  d.kept.assign(1, {std::vector<char>{0, 1, 1, 0, 0, 1, 0, 0}, std::vector<char>(8, 0)});
+  struct Case { double lo, hi; bool kept; double klo, khi; };
+  const Case cases[] = {
+      {-1, 1, true, -0.75, 0.5},          // the hull of cells 1 to 5
+      {-0.5, -0.25, true, -0.5, -0.25},   // cell 2 exactly
+      {-0.25, 0.2, true, -0.25, -0.25},   // cells 3 and 4 dropped; -0.25 is also cell 2's
+      {-0.25, 0.25, true, -0.25, 0.25},   // and 0.25 cell 5's
+      {-0.2, 0.2, false, 0, 0},           // cells 3 and 4 only
+      {0.25, 0.3, true, 0.25, 0.3},       // 0.25: cell 4's and cell 5's (kept)
+      {0.5, 1, true, 0.5, 0.5},           // 0.5: cell 5's upper border
+      {0.51, 1, false, 0, 0},             // cells 6 and 7
+      {-1, -0.8, false, 0, 0},            // cell 0
+      {-1, -0.75, true, -0.75, -0.75},    // -0.75: cell 1's lower border
+  };
+  for (const Case& c : cases) {
+    IT x(c.lo, c.hi);
+    const bool k = d.clip(0, 0, x);
+    CHECK(k == c.kept && (!k || (x.inf() == c.klo && x.sup() == c.khi)),
+          "clip of [" << c.lo << ", " << c.hi << "]: " << (k ? "kept " : "dropped ") << x << ", expected " << (c.kept ? "kept" : "dropped"));
+  }
+  IT x(-1, 1);
+  CHECK(!d.clip(0, 1, x), "clip in chart 1 (no cell kept): kept");
+  x = IT(-1, 1);
+  CHECK(d.clip(0, -1, x) && x.inf() == -1 && x.sup() == 1, "clip of an open chart: changed");
+  RI::internal::Tree_domains none;
+  x = IT(-0.2, 0.2);
+  CHECK(none.clip(0, 0, x) && x.inf() == -0.2 && x.sup() == 0.2, "clip without domains: changed");
+}
+
 // sweep orders of hand-made supports
 static void check_sweep_orders()
 {
@@ -293,6 +373,7 @@ static void check_sweep_orders()
 int main()
 {
   check_sweep_orders();
+  check_clip();
   std::mt19937_64 rng(20261128);
   const std::string dir = RIGID_INCIDENCE_TEST_DATA_DIR;
   for (const std::string f : {"chain4.json", "chain5.json", "chain6.json", "ring7.json"}) check_evaluator(f, load(dir + "/" + f), rng);
@@ -303,9 +384,45 @@ int main()
   }
   check_sweep_scene("chain4.json", load(dir + "/chain4.json"));
   check_sweep_scene("chain6.json", load(dir + "/chain6.json"));
-  check_propagation("two_pairs_of_hinges.json", load(dir + "/two_pairs_of_hinges.json"), 4);
-  check_propagation("chain4.json", load(dir + "/chain4.json"), 0);
-  check_propagation("chain6.json", load(dir + "/chain6.json"), 0);
+  for (bool sweep : {true, false}) {
+    check_consistency("chain5.json", load(dir + "/chain5.json"), sweep);
+    check_consistency("chain6.json", load(dir + "/chain6.json"), sweep);
+  }
+  // the chain of 7: 64 chart combinations, swept by default (Scene_solve_parameters::
+  // sweep_from), with arc consistency; the same configurations expanded, the planted one among
+  // them
+  {
+    const Loaded l = load(dir + "/chain7.json");
+    check_sweep_scene("chain7.json", l);
+    const RI::Scene_solve_result r = RI::solve_scene<IT, CGAL::Gmpq>(l.input, l.c, l.t, l.wf, RI::Scene_solve_parameters());
+    std::ifstream in(dir + "/chain7_planted.json");
+    const nlohmann::json planted = nlohmann::json::parse(in);
+    bool found = false;
+    for (const auto& x : r.configurations) {
+      double d = 0;
+      for (const auto& p : planted.at("points").items())
+        for (std::size_t k = 0; k < 3; ++k) d = (std::max)(d, std::abs(x.configuration.point(p.key())[k] - p.value()[k].get<double>()));
+      found = found || d < 1e-6;
+    }
+    CHECK(r.statistics.swept && r.complete() && r.configurations.size() == 2 && found,
+          "chain7.json: swept " << r.statistics.swept << ", complete " << r.complete() << ", " << r.configurations.size()
+                                << " configurations (2 expected), the planted one among them: " << found);
+  }
+  // a cell count that is not a power of 2: refused
+  {
+    Loaded l = load(dir + "/chain4.json");
+    RI::Tree_system<Traits> S(l.c, l.t, l.wf);
+    for (std::size_t cells : {std::size_t(1), std::size_t(3), std::size_t(1) << 17}) {
+      RI::Tree_solver_parameters P;
+      P.consistency_cells = cells;
+      bool thrown = false;
+      try { RI::solve_tree_system(S, P); } catch (const RI::Input_error& e) { thrown = std::string(e.what()).find("consistency_cells") != std::string::npos; }
+      CHECK(thrown, "consistency_cells = " << cells << ": no Input_error");
+    }
+  }
+  check_propagation("two_pairs_of_hinges.json", load(dir + "/two_pairs_of_hinges.json"), 7);
+  check_propagation("chain4.json", load(dir + "/chain4.json"), 2);
+  check_propagation("chain6.json", load(dir + "/chain6.json"), 26);
   // a box budget: the rest pending
   {
     Loaded l = load(dir + "/chain6.json");

@@ -163,8 +163,12 @@ struct Scene_solve_parameters
   /// false: never (the tests' oracle).
   bool sweep = true;
   /// the fewest chart combinations for which `sweep` is used (below, the expanded systems are
-  /// solved faster: chain of 8 tetrahedra, 128 combinations)
-  std::size_t sweep_from = 256;
+  /// solved faster: chain of 6 tetrahedra, 32 combinations, 0.09 s expanded and 0.12 s swept)
+  std::size_t sweep_from = 64;
+  /// the cells per chart of a hinge of the arc consistency that `solve_tree_system()` runs
+  /// before the sweep and the chart propagation (`Tree_solver_parameters::consistency_cells`; 0:
+  /// none)
+  std::size_t consistency_cells = 512;
   /// Called once before the first combination of charts and placements is solved and after each
   /// one (empty: never), one call
   /// at a time and in the order of the combinations, from the thread that called
@@ -467,6 +471,13 @@ struct Scene_solve_work
   /// `solve_scene()` answers factored where the equations of every chart and the orientation
   /// inequalities keep them apart too (`Scene_solve_parameters::factor_parts`)
   std::size_t independent_parts = 0;
+  /// the variable of the hinge a sweep along the tree would drive (`Scene_solve_parameters::
+  /// sweep`: a tree of hinges whose system has a sweep order with a driver, at least `sweep_from`
+  /// chart combinations, every body in the covering set, one placement combination); empty: not
+  /// solved so. No reduced system is then built, here nor by the solve.
+  std::string sweep_driver;
+  std::size_t sweep_steps = 0;   ///< the hinges the sweep finds from its equations in turn
+  std::size_t sweep_checks = 0;  ///< the equations left to check (a chain's closing distance)
   /// chart_combinations x placement_combinations (saturating at SIZE_MAX): the most reduced
   /// systems a full solve builds and subdivides (fewer when two bodies' placements put a shared
   /// pair of points at certainly different distances: `Scene_solve_statistics::placements_excluded`)
@@ -478,15 +489,37 @@ struct Scene_solve_work
   }
 };
 
+namespace internal {
+
+// per variable of a reduced system, the tree edge whose chart chooses it (its rotation or
+// translation parameters; none: -1): the groups independent_parts() keeps together
+template <class Parametrization>
+std::vector<std::size_t> chart_groups(const Parametrization& p, std::size_t variables)
+{
+  std::vector<std::size_t> group(variables, std::size_t(-1));
+  const auto& edges = p.edges();
+  for (std::size_t k = 0; k < edges.size(); ++k) {
+    for (std::size_t v : edges[k].rotation) if (v < variables) group[v] = k;
+    for (std::size_t v : edges[k].translation) if (v < variables) group[v] = k;
+  }
+  return group;
+}
+
+} // namespace internal
+
 /*!
 \ingroup PkgRigidIncidenceSolver
 \brief The size of the solve of the standard collection `c` on `tree` and `selection` (the
 arguments of `solve_scene()`), before it runs: it enumerates the placements of the bodies known
-by distances (cached for the solve) and builds the reduced system of the first combination.
+by distances (cached for the solve) and builds the reduced system of the first combination, or,
+for a tree of hinges, its `Tree_system` (the same equations, never expanded: a chain of 16
+hinged tetrahedra's closing distance would have 3^15 terms). `sweep_from`: as
+`Scene_solve_parameters::sweep_from`.
 */
 template <class Traits>
 Scene_solve_work scene_solve_work(const Rigid_body_collection<Traits>& c, const Incidence_tree& tree,
-                                  const Well_formed_selection& selection, std::size_t maximal_placements = default_maximal_placements)
+                                  const Well_formed_selection& selection, std::size_t maximal_placements = default_maximal_placements,
+                                  std::size_t sweep_from = Scene_solve_parameters().sweep_from)
 {
   Scene_solve_work w;
   auto times = [](std::size_t a, std::size_t b) {
@@ -499,20 +532,37 @@ Scene_solve_work scene_solve_work(const Rigid_body_collection<Traits>& c, const 
       w.placement_combinations = times(w.placement_combinations, std::size_t(n[b]));
     }
   internal::Rounding_guard<CGAL::Interval_nt<false>> guard;
-  const Reduced_system<Traits, CGAL::Interval_nt<false>> r(c, tree, selection);
-  for (const auto& e : r.parametrization().edges()) w.chart_combinations = times(w.chart_combinations, std::size_t(e.number_of_charts));
-  w.variables = r.number_of_variables();
-  w.equations = r.number_of_equations();
   std::vector<std::vector<std::size_t>> support;
-  for (const auto& e : r.equations()) support.push_back(e.variables);
+  std::vector<std::size_t> group;
+  // a tree of hinges: its Tree_system (the same equations as the reduced system, in the same
+  // order, one variable per hinge, two charts each), never expanded
+  std::optional<Tree_system<Traits>> ts;
+  if (Tree_system<Traits>::unsupported(c, tree).empty()) {
+    try { ts.emplace(c, tree, selection); } catch (const Input_error&) {}  // (then expanded, as any scene)
+  }
+  if (ts) {
+    w.variables = ts->number_of_variables();
+    w.equations = ts->number_of_equations();
+    for (std::size_t k = 0; k < w.variables; ++k) w.chart_combinations = times(w.chart_combinations, 2);
+    for (const auto& e : ts->equations()) support.push_back(e.variables);
+    for (std::size_t k = 0; k < w.variables; ++k) group.push_back(k);
+    const Sweep_order o = ts->is_square() ? sweep_order(*ts) : Sweep_order();
+    if (o.exists(w.variables) && o.driver != Sweep_order::none && w.chart_combinations >= (std::max<std::size_t>)(sweep_from, 2) &&
+        w.placement_combinations == 1 && tree.covering_set.size() == c.number_of_bodies()) {
+      w.sweep_driver = ts->parametrization(0).variable_names()[o.driver];
+      w.sweep_steps = o.steps.size();
+      w.sweep_checks = o.checks.size();
+    }
+  } else {
+    const Reduced_system<Traits, CGAL::Interval_nt<false>> r(c, tree, selection);
+    for (const auto& e : r.parametrization().edges()) w.chart_combinations = times(w.chart_combinations, std::size_t(e.number_of_charts));
+    w.variables = r.number_of_variables();
+    w.equations = r.number_of_equations();
+    for (const auto& e : r.equations()) support.push_back(e.variables);
+    group = internal::chart_groups(r.parametrization(), w.variables);
+  }
   const Solution_plan plan(w.variables, support);
   for (const auto& b : plan.blocks()) w.block_sizes.push_back(b.variables.size());
-  std::vector<std::size_t> group(w.variables, std::size_t(-1));
-  const auto& edges = r.parametrization().edges();
-  for (std::size_t k = 0; k < edges.size(); ++k) {
-    for (std::size_t v : edges[k].rotation) group[v] = k;
-    for (std::size_t v : edges[k].translation) group[v] = k;
-  }
   w.independent_parts = independent_parts(w.variables, support, {}, group).size();
   return w;
 }
@@ -539,6 +589,9 @@ inline std::string describe_work(const Scene_solve_work& w)
   for (std::size_t b : w.block_sizes) largest = (std::max)(largest, b);
   o << w.block_sizes.size() << " block" << (w.block_sizes.size() == 1 ? "" : "s") << " (largest: " << largest << " variable"
     << (largest == 1 ? "" : "s") << "), " << w.independent_parts << " independent part" << (w.independent_parts == 1 ? "" : "s");
+  if (!w.sweep_driver.empty())
+    o << "; solved along the tree by one sweep driven by " << w.sweep_driver << " (" << w.sweep_steps << " hinge" << (w.sweep_steps == 1 ? "" : "s")
+      << " found in turn, " << w.sweep_checks << " equation" << (w.sweep_checks == 1 ? "" : "s") << " checked), no reduced system built";
   return o.str();
 }
 
@@ -1641,9 +1694,11 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
     {
       swept = true;
       st.swept = true;
+      out.coefficient_precision = 53;  // (every configuration from the tree's maps in double intervals)
       Tree_solver_parameters tp;
       tp.interrupt = parameters.interrupt;
       tp.threads = threads;  // (its slices in parallel; the same answer with any number)
+      tp.consistency_cells = parameters.consistency_cells;
       if (parameters.maximal_seconds > 0) tp.maximal_seconds = (std::max)(1e-3, parameters.maximal_seconds - since(started));
       const std::size_t boxes_before = st.boxes;
       tp.progress = [&](std::size_t boxes, std::size_t) { st.boxes = boxes_before + boxes; report(); };
@@ -2049,6 +2104,7 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
       Tree_solver_parameters tp;
       tp.charts_only = true;
       tp.maximal_boxes = 16 * per_placement;
+      tp.consistency_cells = parameters.consistency_cells;
       tp.interrupt = parameters.interrupt;
       if (parameters.maximal_seconds > 0) tp.maximal_seconds = (std::max)(1e-3, parameters.maximal_seconds - since(started));
       Tree_solve_result tr = solve_tree_system(*ts, tp);
@@ -2169,12 +2225,7 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
           }
           const Solution_plan plan(s0.number_of_variables(), eqv, inv);
           if (plan.blocks().size() > 1 && plan.structure() == Solution_plan::WELL_CONSTRAINED && plan.unattached_inequalities().empty()) {
-            std::vector<std::size_t> group(s0.number_of_variables(), std::size_t(-1));
-            const auto& edges = zero->parametrization().edges();
-            for (std::size_t k = 0; k < edges.size(); ++k) {
-              for (std::size_t v : edges[k].rotation) group[v] = k;
-              for (std::size_t v : edges[k].translation) group[v] = k;
-            }
+            const std::vector<std::size_t> group = internal::chart_groups(zero->parametrization(), s0.number_of_variables());
             // Independent parts (no equation, inequality or tree edge joins them: one per
             // plate of stacked platforms): each solved over its own edges' charts, the answer
             // their product, counted exactly and listed up to maximal_listed_configurations

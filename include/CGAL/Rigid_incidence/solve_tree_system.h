@@ -12,8 +12,10 @@
 #include <CGAL/Rigid_incidence/internal/parallel.h>
 #include <Eigen/Dense>
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <functional>
 #include <mutex>
 #include <set>
@@ -63,6 +65,10 @@ struct Tree_solver_parameters
   /// leaves: tasks of the next round), so that uneven work spreads over the threads; the answer
   /// (roots, their order, boxes) does not depend on it
   std::size_t task_boxes = 4096;
+  /// arc consistency before the search (see `solve_tree_system()`): the cells of the grid per
+  /// chart of a hinge, a power of 2 from 2 to 65536 (anything else is refused with an
+  /// `Input_error`), or 0 for none
+  std::size_t consistency_cells = 512;
 };
 
 /// \ingroup PkgRigidIncidenceSolver
@@ -162,6 +168,10 @@ struct Tree_solve_result
   Solver_statistics statistics;         ///< counters
   std::string stopped;                  ///< empty, or why the search stopped early
   std::set<std::vector<int>> chart_combinations; ///< with `charts_only`: the combinations not excluded
+  /// per variable, the fraction of its circle (both charts) that arc consistency kept
+  /// (`Tree_solver_parameters::consistency_cells`); empty when it did not run or a stop cut it short
+  std::vector<double> consistent_fraction;
+  double consistency_seconds = 0;       ///< the time arc consistency took (in `statistics.seconds` too)
   /// no region left
   bool complete() const { return unresolved.empty(); }
 };
@@ -177,6 +187,51 @@ public:
   static bool contains_zero(const IT& x) { return x.inf() <= 0 && 0 <= x.sup(); }
   static bool empty_meet(const IT& a, const IT& b) { return a.sup() < b.inf() || b.sup() < a.inf(); }
   static IT meet(const IT& a, const IT& b) { return IT((std::max)(a.inf(), b.inf()), (std::min)(a.sup(), b.sup())); }
+};
+
+// The cells of each hinge's charts that arc consistency kept (tree_domains()): a grid of
+// `cells` closed cells per chart, cell i = [lower(i), lower(i + 1)]; no cell of the grid
+// outside them holds a solution of the equations it was built from.
+struct Tree_domains
+{
+  typedef CGAL::Interval_nt<false> IT;
+  std::size_t cells = 0;                                   // 0: none (every value kept)
+  std::vector<std::array<std::vector<char>, 2>> kept;     // per variable and chart, per cell
+  // exact: -1 + 2 i / cells with cells a power of 2 (at most 2^16)
+  double lower(std::size_t i) const { return -1 + 2 * double(i) / double(cells); }
+  // X (in chart ch of variable v) cut to the hull of the kept cells it meets; false: it meets
+  // none. A `WHOLE` variable (ch not 0 or 1) is left as it is.
+  bool clip(std::size_t v, int ch, IT& X) const
+  {
+    if (cells == 0 || ch < 0 || ch > 1) return true;
+    const std::vector<char>& k = kept[v][std::size_t(ch)];
+    const std::size_t G = cells;
+    auto guess = [&](double t) {  // (a first guess; the loops below settle it exactly)
+      const double g = std::floor((t + 1) * 0.5 * double(G));
+      return g <= 0 ? std::size_t(0) : g >= double(G - 1) ? G - 1 : std::size_t(g);
+    };
+    // the lowest cell holding X.inf(), the highest holding X.sup() (a bound on a cell border
+    // is in both cells)
+    std::size_t i0 = guess(X.inf()), i1 = guess(X.sup());
+    while (i0 > 0 && lower(i0) >= X.inf()) --i0;
+    while (i0 + 1 < G && lower(i0 + 1) < X.inf()) ++i0;
+    while (i1 + 1 < G && lower(i1 + 1) <= X.sup()) ++i1;
+    while (i1 > 0 && lower(i1) > X.sup()) --i1;
+    while (i0 <= i1 && !k[i0]) ++i0;
+    while (i1 >= i0 && i1 < G && !k[i1]) { if (i1 == 0) return false; --i1; }
+    if (i0 > i1) return false;
+    const IT hull(lower(i0), lower(i1 + 1));
+    if (Tree_branch_and_prune_base::empty_meet(X, hull)) return false;
+    X = Tree_branch_and_prune_base::meet(X, hull);
+    return true;
+  }
+  // the fraction of variable v's cells kept, over both charts
+  double fraction(std::size_t v) const
+  {
+    std::size_t k = 0;
+    for (int ch = 0; ch < 2; ++ch) for (char c : kept[v][std::size_t(ch)]) k += c ? 1 : 0;
+    return cells ? double(k) / double(2 * cells) : 1.0;
+  }
 };
 
 } // namespace internal
@@ -227,6 +282,20 @@ chart and solves them as tasks of at most `Tree_solver_parameters::task_boxes` b
 tasks, and the answers are merged in depth-first order, so the answer (roots, their order,
 boxes) is the same with any number of threads (unless a budget, the time limit or an interrupt
 cuts it).
+
+<b>Arc consistency</b> (`Tree_solver_parameters::consistency_cells`, 512) runs first, once: each
+equation in one or two hinges (a chain's braces) is enclosed over a grid of that many closed
+cells per chart of each of its hinges (a quadtree: its first-order enclosure over a square that
+cannot vanish drops the square), and a cell of a hinge is dropped when no cell of an equation's
+other hinge that is still kept meets it in a square left, to a fixed point (AC-3 over the grid,
+as constraint programming does for binary constraints). No solution of those equations lies
+outside the cells kept, so every box of the search is cut to them (the driver, each step's
+pieces, each round of contraction): on a chain of tetrahedra, 2 to 30 % of each hinge's circle
+is kept, and the branches of the steps' curve that die further along the chain are cut where
+they start, not found box by box. An equation whose squares left exceed 64 cells per cell of a
+side (a curve crosses a few) is left out (it would prune little); a stop (time limit, interrupt)
+during it keeps every cell. `Tree_solve_result::consistent_fraction` gives the fraction kept per
+hinge.
 
 Roots are certified (the Krawczyk test is a proof in outward-rounded double intervals); a root
 found from two neighbouring boxes is kept once (its enclosure lies in the other's uniqueness
@@ -300,6 +369,98 @@ inline void add_tree_regions(std::size_t n, const std::vector<const Tree_box*>& 
   }
 }
 
+// Arc consistency (AC-3) of the equations of S in one or two variables on a grid of `cells`
+// cells per chart of each hinge (see solve_tree_system()). The caller keeps a
+// CGAL::Protect_FPU_rounding<true> alive. `stop` (checked every 1024 evaluations) cuts it
+// short: the result is then none (cells 0: every value kept), an optimization lost, nothing else.
+template <class Traits>
+Tree_domains tree_domains(const Tree_system<Traits>& S, std::size_t cells, const std::function<bool()>& stop)
+{
+  typedef CGAL::Interval_nt<false> IT;
+  typedef Tree_branch_and_prune_base B;
+  typedef Tree_system<Traits> TS;
+  const std::size_t n = S.number_of_variables(), ne = S.number_of_equations();
+  Tree_domains d;
+  if (cells == 0 || n == 0) return d;
+  d.cells = cells;
+  d.kept.assign(n, {std::vector<char>(cells, 1), std::vector<char>(cells, 1)});
+  // per equation, the cells (one per variable: chart, index) of the grid where its first-order
+  // enclosure contains 0: a quadtree over each combination of its variables' charts
+  struct Leaf { int c[2]; std::size_t i[2]; };
+  std::vector<std::vector<Leaf>> leaves(ne);
+  std::vector<char> used(ne, 0);
+  std::vector<int> ch(n, 0);
+  std::vector<IT> x(n, IT(-1, 1));
+  std::vector<IT> A;
+  typename TS::Workspace ws;
+  std::size_t evaluations = 0;
+  // (a curve crosses a few cells per cell of a side; an equation that keeps far more than that
+  // over its grid prunes little and costs much: left out)
+  const std::size_t leaf_cap = 64 * cells;
+  struct Cell { std::size_t lo[2], hi[2]; };
+  for (std::size_t e = 0; e < ne; ++e) {
+    const std::vector<std::size_t>& vars = S.equations()[e].variables;
+    const std::size_t m = vars.size();
+    if (m == 0 || m > 2) continue;
+    bool over = false;
+    for (int combo = 0; combo < (m == 2 ? 4 : 2) && !over; ++combo) {
+      const int c0 = combo & 1, c1 = (combo >> 1) & 1;
+      ch[vars[0]] = c0;
+      if (m == 2) ch[vars[1]] = c1;
+      std::vector<Cell> todo{{{0, 0}, {cells, m == 2 ? cells : 1}}};
+      while (!todo.empty() && !over) {
+        const Cell q = todo.back();
+        todo.pop_back();
+        if (++evaluations % 1024 == 0 && stop && stop()) return Tree_domains();
+        for (std::size_t k = 0; k < m; ++k) x[vars[k]] = IT(d.lower(q.lo[k]), d.lower(q.hi[k]));
+        if (!B::contains_zero(TS::range(S.evaluate(e, ch, x, A, &ws), A))) continue;
+        const bool leaf = q.hi[0] - q.lo[0] == 1 && (m == 1 || q.hi[1] - q.lo[1] == 1);
+        if (leaf) {
+          leaves[e].push_back({{c0, c1}, {q.lo[0], m == 2 ? q.lo[1] : 0}});
+          over = leaves[e].size() > leaf_cap;
+          continue;
+        }
+        // the halves of each side longer than one cell (the upper ones first on the stack)
+        const std::size_t h0 = q.hi[0] - q.lo[0] > 1 ? 2 : 1, h1 = m == 2 && q.hi[1] - q.lo[1] > 1 ? 2 : 1;
+        for (std::size_t a = h0; a-- > 0;)
+          for (std::size_t b = h1; b-- > 0;) {
+            Cell r = q;
+            if (h0 == 2) { const std::size_t mid = (q.lo[0] + q.hi[0]) / 2; (a ? r.lo[0] : r.hi[0]) = mid; }
+            if (h1 == 2) { const std::size_t mid = (q.lo[1] + q.hi[1]) / 2; (b ? r.lo[1] : r.hi[1]) = mid; }
+            todo.push_back(r);
+          }
+      }
+    }
+    if (over) leaves[e].clear();
+    else used[e] = 1;
+  }
+  // to a fixed point: a cell of a variable is kept while some leaf of each of its equations
+  // holds it with the other variable's cell kept
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (std::size_t e = 0; e < ne; ++e) {
+      if (!used[e]) continue;
+      const std::vector<std::size_t>& vars = S.equations()[e].variables;
+      const std::size_t m = vars.size();
+      std::vector<std::array<std::vector<char>, 2>> seen(m, {std::vector<char>(cells, 0), std::vector<char>(cells, 0)});
+      std::vector<Leaf> keep;
+      for (const Leaf& l : leaves[e]) {
+        bool alive = true;
+        for (std::size_t k = 0; k < m; ++k) alive = alive && d.kept[vars[k]][std::size_t(l.c[k])][l.i[k]];
+        if (!alive) continue;
+        for (std::size_t k = 0; k < m; ++k) seen[k][std::size_t(l.c[k])][l.i[k]] = 1;
+        keep.push_back(l);
+      }
+      leaves[e].swap(keep);
+      for (std::size_t k = 0; k < m; ++k)
+        for (std::size_t c = 0; c < 2; ++c)
+          for (std::size_t i = 0; i < cells; ++i)
+            if (d.kept[vars[k]][c][i] && !seen[k][c][i]) { d.kept[vars[k]][c][i] = 0; changed = true; }
+    }
+  }
+  return d;
+}
+
 // what a task of the sweep leaves to the caller: its unknown boxes (and why), its pending
 // boxes (a stop), and the boxes it would have visited next (its share of boxes done)
 struct Tree_task_boxes
@@ -313,7 +474,8 @@ struct Tree_task_boxes
 // solve_tree_system(); `sweep`, if given, is the system's sweep order (not computed again);
 // `shared`
 // counts the boxes of every slice against the budget (and calls `progress`); `since` (with a
-// time limit) is when the time limit started for every slice. With `start` (a sweep), from
+// time limit) is when the time limit started for every slice; `domains`, the cells arc
+// consistency kept (every box cut to them). With `start` (a sweep), from
 // these boxes (the first visited first). With `task`, a task of the sweep: it stops after
 // `task_boxes` boxes and leaves the boxes it would have visited next in `task->left_over`, in
 // that order; its unknown and pending boxes go to `task` as boxes, and its roots are all kept
@@ -324,7 +486,7 @@ Tree_solve_result solve_tree_system_from(const Tree_system<Traits>& S, const Tre
                                          std::atomic<std::size_t>* shared,
                                          const std::chrono::steady_clock::time_point* since = nullptr,
                                          const std::vector<Tree_box>* start = nullptr, std::size_t task_boxes = 0,
-                                         Tree_task_boxes* task = nullptr)
+                                         Tree_task_boxes* task = nullptr, const Tree_domains* domains = nullptr)
 {
   typedef CGAL::Interval_nt<false> IT;
   typedef internal::Tree_branch_and_prune_base B;
@@ -336,6 +498,8 @@ Tree_solve_result solve_tree_system_from(const Tree_system<Traits>& S, const Tre
   if (!S.is_square()) throw Input_error("solve_tree_system: the system is not square");
   Tree_solve_result out;
   Solver_statistics& st = out.statistics;
+  const Tree_domains none;
+  const Tree_domains& D = domains ? *domains : none;
   // a box; `groups`: where slicing left a variable in separate pieces (or in both charts), the
   // pieces, which the split takes as the children
   typedef Tree_piece Piece;
@@ -399,6 +563,12 @@ Tree_solve_result solve_tree_system_from(const Tree_system<Traits>& S, const Tre
     for (int round = 0; round < P.contraction_rounds; ++round) {
       bool changed = false;
       bool all_chosen = true;
+      // (each hinge cut to the cells arc consistency kept: no solution lies outside them)
+      for (std::size_t i = 0; i < n; ++i) {
+        const IT before = b.x[i];
+        if (!D.clip(i, b.ch[i], b.x[i])) return false;
+        if (round > 0 && B::width(b.x[i]) < 0.9 * B::width(before)) changed = true;
+      }
       for (std::size_t e = 0; e < ne; ++e) {
         std::size_t j = 0;
         const std::size_t w = whole_count(e, b, &j);
@@ -706,7 +876,8 @@ Tree_solve_result solve_tree_system_from(const Tree_system<Traits>& S, const Tre
     ++st.boxes;
     if (P.progress && !shared && st.boxes % 4096 == 0) P.progress(st.boxes, out.roots.size());
     // each step's variable from its equation, in order; separate pieces are separate boxes
-    bool excluded = false;
+    // (every variable within the cells arc consistency kept)
+    bool excluded = order.driver != Sweep_order::none && !D.clip(order.driver, b.ch[order.driver], b.x[order.driver]);
     for (std::size_t i = b.level; i < order.steps.size() && !excluded; ++i) {
       const std::size_t e = order.steps[i].first, v = order.steps[i].second;
       pieces.clear();
@@ -714,8 +885,14 @@ Tree_solve_result solve_tree_system_from(const Tree_system<Traits>& S, const Tre
       const int ch0 = b.ch[v];
       for (int ch = 0; ch < 2; ++ch) {
         if (ch0 != WHOLE && ch != ch0) continue;
-        refine(b, e, v, ch, ch0 == WHOLE ? IT(-1, 1) : X0, ch0 == WHOLE ? 3 : 2, pieces);
+        IT X = ch0 == WHOLE ? IT(-1, 1) : X0;
+        if (!D.clip(v, ch, X)) continue;
+        refine(b, e, v, ch, X, ch0 == WHOLE ? 3 : 2, pieces);
       }
+      std::size_t kept = 0;
+      for (Piece& pc : pieces)
+        if (D.clip(v, pc.ch, pc.x)) pieces[kept++] = pc;
+      pieces.resize(kept);
       if (pieces.empty()) { excluded = true; break; }
       // pieces that cover most of their hull are slices of one wide set (the driver still
       // wide), not separate branches: one box for their hull (else the boxes multiply with the
@@ -890,11 +1067,36 @@ Tree_solve_result solve_tree_system(const Tree_system<Traits>& S, const Tree_sol
   const std::size_t K = P.sweep_slices;
   if (K == 0 || (K & (K - 1)) != 0 || K > (std::size_t(1) << 20))
     throw Input_error("solve_tree_system: sweep_slices must be a power of 2 (1 to 2^20), not " + std::to_string(K));
-  const Sweep_order order = P.sweep && !P.charts_only && S.is_square() ? sweep_order(S) : Sweep_order();
-  if (!order.exists(n) || order.driver == Sweep_order::none)
-    return internal::solve_tree_system_from(S, P, nullptr, nullptr);
+  const std::size_t G = P.consistency_cells;
+  if (G != 0 && (G < 2 || (G & (G - 1)) != 0 || G > (std::size_t(1) << 16)))
+    throw Input_error("solve_tree_system: consistency_cells must be 0 or a power of 2 (2 to 65536), not " + std::to_string(G));
   typedef CGAL::Interval_nt<false> IT;
   const auto started = std::chrono::steady_clock::now();  // (one time limit for every task)
+  // arc consistency first: the cells of each hinge's circle no solution of the short equations
+  // leaves out (an optimization: a stop cuts it short and it keeps every cell)
+  internal::Tree_domains domains;
+  double consistency_seconds = 0;
+  if (G != 0 && S.is_square()) {
+    CGAL::Protect_FPU_rounding<true> guard;
+    domains = internal::tree_domains(S, G, [&]() {
+      return (P.interrupt && P.interrupt->load(std::memory_order_relaxed)) ||
+             (P.maximal_seconds > 0 && std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count() >= P.maximal_seconds);
+    });
+    consistency_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  }
+  auto finish = [&](Tree_solve_result& r) {
+    r.consistency_seconds = consistency_seconds;
+    if (domains.cells) for (std::size_t v = 0; v < n; ++v) r.consistent_fraction.push_back(domains.fraction(v));
+    r.statistics.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    return r;
+  };
+  const Sweep_order order = P.sweep && !P.charts_only && S.is_square() ? sweep_order(S) : Sweep_order();
+  if (!order.exists(n) || order.driver == Sweep_order::none) {
+    Tree_solver_parameters Q = P;  // (the time limit counts the consistency's time)
+    if (P.maximal_seconds > 0) Q.maximal_seconds = (std::max)(1e-9, P.maximal_seconds - consistency_seconds);
+    Tree_solve_result r = internal::solve_tree_system_from(S, Q, nullptr, nullptr, nullptr, nullptr, 0, nullptr, &domains);
+    return finish(r);
+  }
   // the slices, in the order the sweep visits them (chart 0 first, each from -1 up); their
   // bounds are exact (K a power of 2)
   std::vector<internal::Tree_box> slices;
@@ -934,7 +1136,7 @@ Tree_solve_result solve_tree_system(const Tree_system<Traits>& S, const Tree_sol
     const std::size_t end = tasks.size();
     internal::parallel_for_each_index(end - begin, P.threads, [&](std::size_t i) {
       Task& t = tasks[begin + i];
-      Tree_solve_result r = internal::solve_tree_system_from(S, Q, &order, &boxes, &started, &t.start, task_boxes, &t.boxes);
+      Tree_solve_result r = internal::solve_tree_system_from(S, Q, &order, &boxes, &started, &t.start, task_boxes, &t.boxes, &domains);
       std::lock_guard<std::mutex> lock(progress_mutex);  // (the progress reads the results)
       t.result = std::move(r);
     });
@@ -988,8 +1190,7 @@ Tree_solve_result solve_tree_system(const Tree_system<Traits>& S, const Tree_sol
   }
   internal::add_tree_regions(n, unknown, Box_class::UNKNOWN, [&](std::size_t i) { return *unknown_reason[i]; }, out.unresolved);
   internal::add_tree_regions(n, pending, Box_class::PENDING, [&](std::size_t i) { return *pending_reason[i]; }, out.unresolved);
-  out.statistics.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  return out;
+  return finish(out);
 }
 
 } // namespace Rigid_incidence

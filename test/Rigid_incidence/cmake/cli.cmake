@@ -379,11 +379,12 @@ if(TARGET rigid_incidence)
            COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${_ri_platforms}|--max-listed|2" -DEXPECT_RC=0
                    "-DEXPECT_STDOUT=6 solution\\(s\\) of the part placing&&36 configuration\\(s\\), all certified: complete&&listed: 2 of 36"
                    -P ${_ri_cli_script})
-  # the charts chosen by propagation along the tree of hinges, and --no-propagation (every
-  # combination built: the same configurations)
+  # the charts chosen by propagation along the tree of hinges (with arc consistency first: 15
+  # of 16 combinations never built, 4 without), and --no-propagation (every combination built:
+  # the same configurations)
   add_test(NAME cli_solve_chain5_propagation
            COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${CMAKE_CURRENT_LIST_DIR}/../data/chain5.json" -DEXPECT_RC=0
-                   "-DEXPECT_STDOUT=4 chart combinations never built \\(excluded by propagation" -P ${_ri_cli_script})
+                   "-DEXPECT_STDOUT=15 chart combinations never built \\(excluded by propagation" -P ${_ri_cli_script})
   add_test(NAME cli_solve_chain5_no_propagation
            COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${CMAKE_CURRENT_LIST_DIR}/../data/chain5.json|--no-propagation|--json" -DEXPECT_RC=0
                    "-DEXPECT_STDOUT=\"excluded_by_propagation\": 0,"
@@ -391,6 +392,29 @@ if(TARGET rigid_incidence)
                    "-DCHECK_PROGRAM=$<TARGET_FILE:solve_json_check>"
                    "-DCHECK_ARGS=STDOUT_FILE|${CMAKE_CURRENT_LIST_DIR}/../data/chain5.json|--complete|true|--solutions|2"
                    -P ${_ri_cli_script})
+  # the chain of 7 (64 chart combinations) swept along its tree, with and without arc
+  # consistency: the same 2 configurations, complete
+  foreach(_ri_consistency IN ITEMS on off)
+    set(_ri_extra "")
+    if(_ri_consistency STREQUAL "off")
+      set(_ri_extra "|--no-consistency")
+    endif()
+    add_test(NAME cli_solve_chain7_consistency_${_ri_consistency}
+             COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${CMAKE_CURRENT_LIST_DIR}/../data/chain7.json|--json${_ri_extra}" -DEXPECT_RC=0
+                     "-DEXPECT_STDOUT=\"swept\": true"
+                     "-DSTDOUT_FILE=${CMAKE_CURRENT_BINARY_DIR}/cli_solve_chain7_consistency_${_ri_consistency}.json"
+                     "-DCHECK_PROGRAM=$<TARGET_FILE:solve_json_check>"
+                     "-DCHECK_ARGS=STDOUT_FILE|${CMAKE_CURRENT_LIST_DIR}/../data/chain7.json|--complete|true|--solutions|2"
+                     -P ${_ri_cli_script})
+  endforeach()
+  # analyze on a chain of 16 (32,768 chart combinations): the work read off the tree of hinges,
+  # the sweep said, nothing expanded (its closing distance would have 3^15 terms: analyze once
+  # ran for minutes and gigabytes on it)
+  add_test(NAME cli_analyze_chain16_sweep
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=analyze|${CMAKE_CURRENT_LIST_DIR}/../data/chain16.json" -DEXPECT_RC=0
+                   "-DEXPECT_STDOUT=32768 chart combinations x 1 placement combination&&solved along the tree by one sweep driven by"
+                   -P ${_ri_cli_script})
+  set_tests_properties(cli_analyze_chain16_sweep PROPERTIES TIMEOUT 60)
   add_test(NAME cli_usage_max_listed
            COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${_ri_platforms}|--max-listed|-2" -DEXPECT_RC=1
                    "-DEXPECT_STDERR=--max-listed: '-2' is not a whole number" -P ${_ri_cli_script})
@@ -402,19 +426,20 @@ if(TARGET rigid_incidence)
            COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=analyze|${_ri_platforms}|--no-plan" -DEXPECT_RC=1
                    "-DEXPECT_STDERR=--no-plan is an option of solve and solve-system" -P ${_ri_cli_script})
   # a time limit for the whole solve, and the interrupt (issue 28, item 5): a scene whose solve
-  # chart combination by chart combination (--no-sweep: the sweep solves it in a second) runs
+  # chart combination by chart combination (--no-sweep: the sweep solves it in a second;
+  # --no-consistency: arc consistency leaves 2 of its 512 combinations, 2 s) runs
   # for 70 s (a chain of 10 tetrahedra) stops, and its partial answer is valid JSON whose solutions hold
   # in the scene and which says it is not complete (exit status 0 at the time limit, 130 or
   # 143 after SIGINT or SIGTERM, sent by coreutils' timeout)
   set(_ri_long ${CMAKE_CURRENT_LIST_DIR}/../data/tetrahedron_chain10.json)
   add_test(NAME cli_solve_max_seconds
-           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${_ri_long}|--no-sweep|--json|--max-seconds|2" -DEXPECT_RC=0
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${_ri_long}|--no-sweep|--no-consistency|--json|--max-seconds|2" -DEXPECT_RC=0
                    "-DEXPECT_STDOUT=time limit of 2 s reached"
                    "-DSTDOUT_FILE=${CMAKE_CURRENT_BINARY_DIR}/cli_solve_max_seconds.json"
                    "-DCHECK_PROGRAM=$<TARGET_FILE:solve_json_check>" "-DCHECK_ARGS=STDOUT_FILE|${_ri_long}|--complete|false"
                    -P ${_ri_cli_script})
   add_test(NAME cli_solve_max_seconds_text
-           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${_ri_long}|--no-sweep|--max-seconds|1|--quiet" -DEXPECT_RC=0
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${_ri_long}|--no-sweep|--no-consistency|--max-seconds|1|--quiet" -DEXPECT_RC=0
                    "-DEXPECT_STDOUT=limit reached: time limit of 1 s reached&&NOT complete" -P ${_ri_cli_script})
   find_program(RIGID_INCIDENCE_TIMEOUT timeout)
   if(RIGID_INCIDENCE_TIMEOUT)
@@ -426,7 +451,7 @@ if(TARGET rigid_incidence)
       endif()
       add_test(NAME cli_solve_sig${_sig}
                COMMAND ${CMAKE_COMMAND} "-DTOOL=${RIGID_INCIDENCE_TIMEOUT}"
-                       "-DARGS=--preserve-status|-s|${_sig}|3|${_ri_tool}|solve|${_ri_long}|--no-sweep|--json" -DEXPECT_RC=${_rc}
+                       "-DARGS=--preserve-status|-s|${_sig}|3|${_ri_tool}|solve|${_ri_long}|--no-sweep|--no-consistency|--json" -DEXPECT_RC=${_rc}
                        "-DEXPECT_STDOUT=\"interrupted after"
                        "-DSTDOUT_FILE=${CMAKE_CURRENT_BINARY_DIR}/cli_solve_sig${_sig}.json"
                        "-DCHECK_PROGRAM=$<TARGET_FILE:solve_json_check>" "-DCHECK_ARGS=STDOUT_FILE|${_ri_long}|--complete|false"
@@ -447,7 +472,7 @@ if(TARGET rigid_incidence)
   if(RIGID_INCIDENCE_SH)
     add_test(NAME cli_solve_sigTERM_twice
              COMMAND ${CMAKE_COMMAND} "-DTOOL=${RIGID_INCIDENCE_SH}"
-                     "-DARGS=${CMAKE_CURRENT_LIST_DIR}/../cli/signal_twice.sh|TERM|2|${_ri_tool}|solve|${_ri_long}|--no-sweep|--json"
+                     "-DARGS=${CMAKE_CURRENT_LIST_DIR}/../cli/signal_twice.sh|TERM|2|${_ri_tool}|solve|${_ri_long}|--no-sweep|--no-consistency|--json"
                      -DEXPECT_RC=143 "-DEXPECT_STDOUT=\"interrupted after"
                      "-DSTDOUT_FILE=${CMAKE_CURRENT_BINARY_DIR}/cli_solve_sigTERM_twice.json"
                      "-DCHECK_PROGRAM=$<TARGET_FILE:solve_json_check>" "-DCHECK_ARGS=STDOUT_FILE|${_ri_long}|--complete|false"
