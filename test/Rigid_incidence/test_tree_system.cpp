@@ -407,6 +407,14 @@ int main()
     CHECK(r.statistics.swept && r.complete() && r.configurations.size() == 2 && found,
           "chain7.json: swept " << r.statistics.swept << ", complete " << r.complete() << ", " << r.configurations.size()
                                 << " configurations (2 expected), the planted one among them: " << found);
+    // the statistics say what arc consistency kept (one fraction per hinge), and nothing without it
+    RI::Scene_solve_parameters none;
+    none.consistency_cells = 0;
+    const RI::Scene_solve_result z = RI::solve_scene<IT, CGAL::Gmpq>(l.input, l.c, l.t, l.wf, none);
+    CHECK(r.statistics.consistent_fraction.size() == r.variables.size() && r.statistics.consistency_seconds > 0 &&
+              z.statistics.consistent_fraction.empty() && z.configurations.size() == 2,
+          "chain7.json: " << r.statistics.consistent_fraction.size() << " fractions kept for " << r.variables.size() << " hinges, "
+                          << z.statistics.consistent_fraction.size() << " without arc consistency (" << z.configurations.size() << " configurations)");
   }
   // a cell count that is not a power of 2: refused
   {

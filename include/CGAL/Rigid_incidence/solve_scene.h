@@ -321,6 +321,11 @@ struct Scene_solve_statistics
   /// the scene was solved along its tree by a sweep (`Scene_solve_parameters::sweep`), not per
   /// chart combination; `boxes` and `krawczyk_tests` are then the sweep's
   bool swept = false;
+  /// per hinge, the fraction of its circle arc consistency kept before the sweep or the chart
+  /// propagation (`Scene_solve_parameters::consistency_cells`; `Tree_solve_result::
+  /// consistent_fraction`); empty when neither ran it
+  std::vector<double> consistent_fraction;
+  double consistency_seconds = 0;          ///< its time (in `solve_seconds` too)
   std::size_t curve_boxes = 0;             ///< boxes visited by the curve tracer, all systems
   double reduce_seconds = 0;               ///< building the reduced systems
   double solve_seconds = 0;                ///< the subdivision solver
@@ -1707,6 +1712,8 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
       st.solve_seconds += since(t1);
       st.boxes += tr.statistics.boxes;
       st.krawczyk_tests += tr.statistics.krawczyk_tests;
+      st.consistent_fraction = tr.consistent_fraction;
+      st.consistency_seconds += tr.consistency_seconds;
       auto t3 = Clock::now();
       typedef Incidence_tree_parametrization<Traits, CGAL::Interval_nt<false>> Tree_parametrization;
       for (const Tree_root& root : tr.roots) {
@@ -2108,6 +2115,8 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
       tp.interrupt = parameters.interrupt;
       if (parameters.maximal_seconds > 0) tp.maximal_seconds = (std::max)(1e-3, parameters.maximal_seconds - since(started));
       Tree_solve_result tr = solve_tree_system(*ts, tp);
+      st.consistent_fraction = tr.consistent_fraction;
+      st.consistency_seconds += tr.consistency_seconds;
       if (tr.stopped.empty()) propagated = std::move(tr.chart_combinations);
     }
     st.solve_seconds += since(t1);

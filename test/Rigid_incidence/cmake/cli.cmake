@@ -396,12 +396,14 @@ if(TARGET rigid_incidence)
   # consistency: the same 2 configurations, complete
   foreach(_ri_consistency IN ITEMS on off)
     set(_ri_extra "")
+    set(_ri_kept "\"consistency\": \\{")
     if(_ri_consistency STREQUAL "off")
       set(_ri_extra "|--no-consistency")
+      set(_ri_kept "\"consistency\": null")
     endif()
     add_test(NAME cli_solve_chain7_consistency_${_ri_consistency}
              COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${CMAKE_CURRENT_LIST_DIR}/../data/chain7.json|--json${_ri_extra}" -DEXPECT_RC=0
-                     "-DEXPECT_STDOUT=\"swept\": true"
+                     "-DEXPECT_STDOUT=\"swept\": true&&${_ri_kept}"
                      "-DSTDOUT_FILE=${CMAKE_CURRENT_BINARY_DIR}/cli_solve_chain7_consistency_${_ri_consistency}.json"
                      "-DCHECK_PROGRAM=$<TARGET_FILE:solve_json_check>"
                      "-DCHECK_ARGS=STDOUT_FILE|${CMAKE_CURRENT_LIST_DIR}/../data/chain7.json|--complete|true|--solutions|2"
@@ -415,6 +417,10 @@ if(TARGET rigid_incidence)
                    "-DEXPECT_STDOUT=32768 chart combinations x 1 placement combination&&solved along the tree by one sweep driven by"
                    -P ${_ri_cli_script})
   set_tests_properties(cli_analyze_chain16_sweep PROPERTIES TIMEOUT 60)
+  add_test(NAME cli_solve_chain7_consistency_text
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${CMAKE_CURRENT_LIST_DIR}/../data/chain7.json" -DEXPECT_RC=0
+                   "-DEXPECT_STDOUT=solved along the tree by a sweep \\(no chart combination built\\), arc consistency kept [0-9.e-]+ to [0-9.e-]+ % of each hinge's circle"
+                   -P ${_ri_cli_script})
   add_test(NAME cli_usage_max_listed
            COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${_ri_platforms}|--max-listed|-2" -DEXPECT_RC=1
                    "-DEXPECT_STDERR=--max-listed: '-2' is not a whole number" -P ${_ri_cli_script})
