@@ -20,7 +20,7 @@
 //   expanded answer, in solve_tree_system() and in solve_scene() (point for point), and the
 //   sweep cut by a time limit (not complete, saying why); sweep orders of hand-made supports;
 // - arc consistency (Tree_solver_parameters::consistency_cells) against none: the same roots,
-//   each in the cells kept, fewer boxes; its clip by hand at cell borders; a bad cell count
+//   each in the cells kept; its clip by hand at cell borders; a bad cell count
 //   refused; the chain of 7 (64 combinations: swept by default) point for point against the
 //   expanded systems, the planted configuration among its configurations;
 // - a box budget: the rest pending, the result not complete;
@@ -278,7 +278,7 @@ static void check_sweep_scene(const std::string& name, const Loaded& l)
 }
 
 // arc consistency against none: the same roots (root for root), every root inside the cells
-// kept, no more boxes
+// kept (the boxes printed)
 static void check_consistency(const std::string& name, const Loaded& l, bool sweep)
 {
   RI::Tree_system<Traits> S(l.c, l.t, l.wf);
@@ -302,7 +302,7 @@ static void check_consistency(const std::string& name, const Loaded& l, bool swe
     for (const auto& y : a.roots) seen += x.charts == y.charts && shape_distance(x.approximation, y.approximation) < 1e-9;
     CHECK(seen == 1, name << ": a root without arc consistency found " << seen << " times with it");
   }
-  CHECK(a.statistics.boxes <= b.statistics.boxes, name << ": " << a.statistics.boxes << " boxes with arc consistency, " << b.statistics.boxes << " without");
+  // (fewer boxes is usual, not a property: the chain of 7 at 16 cells takes 791 against 771)
   // the cells kept hold every root (the domains computed again, as the solve does)
   CGAL::Protect_FPU_rounding<true> guard;
   const RI::internal::Tree_domains d = RI::internal::tree_domains(S, on.consistency_cells, {});
