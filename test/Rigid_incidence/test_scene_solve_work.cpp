@@ -476,14 +476,22 @@ int main()
     for (const auto& e : r.equations()) support.push_back(e.variables);
     std::vector<std::size_t> blocks;
     for (const auto& b : RI::Solution_plan(r.number_of_variables(), support).blocks()) blocks.push_back(b.variables.size());
+    const std::size_t parts =
+        RI::independent_parts(r.number_of_variables(), support, {}, RI::internal::chart_groups(r.parametrization(), r.number_of_variables()))
+            .size();
     CHECK(w.variables == r.number_of_variables() && w.equations == r.number_of_equations() && w.chart_combinations == charts &&
-              w.block_sizes == blocks,
+              w.block_sizes == blocks && w.independent_parts == parts,
           name << ": " << RI::internal::describe_work(w) << "; expanded: " << r.number_of_variables() << " variables, " << r.number_of_equations()
                << " equations, " << charts << " chart combinations");
     const bool swept = std::string(name) == "chain7.json";
     CHECK(swept == !w.sweep_driver.empty() && (!swept || (w.sweep_steps == 5 && w.sweep_checks == 1)) &&
               (RI::internal::describe_work(w).find("one sweep") != std::string::npos) == swept,
           name << ": " << RI::internal::describe_work(w));
+    // the solve sweeps exactly where the estimate says it will (one predicate decides both)
+    const Outcome o = solve(scene, true, 60);
+    CHECK(o.result.statistics.swept == swept && o.result.complete(),
+          name << ": the solve " << (o.result.statistics.swept ? "swept" : "did not sweep") << ", the estimate says it "
+               << (swept ? "will" : "will not"));
     std::cout << name << ": " << RI::internal::describe_work(w) << "\n";
   }
   if (failures) { std::cerr << failures << " failure(s)\n"; return 1; }

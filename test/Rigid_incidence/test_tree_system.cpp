@@ -416,7 +416,8 @@ int main()
           "chain7.json: " << r.statistics.consistent_fraction.size() << " fractions kept for " << r.variables.size() << " hinges, "
                           << z.statistics.consistent_fraction.size() << " without arc consistency (" << z.configurations.size() << " configurations)");
   }
-  // a cell count that is not a power of 2: refused
+  // a cell count that is not a power of 2: refused, by solve_tree_system() and by solve_scene()
+  // before any work (the chain of 4 is never swept: its expanded systems would be solved)
   {
     Loaded l = load(dir + "/chain4.json");
     RI::Tree_system<Traits> S(l.c, l.t, l.wf);
@@ -426,7 +427,42 @@ int main()
       bool thrown = false;
       try { RI::solve_tree_system(S, P); } catch (const RI::Input_error& e) { thrown = std::string(e.what()).find("consistency_cells") != std::string::npos; }
       CHECK(thrown, "consistency_cells = " << cells << ": no Input_error");
+      RI::Scene_solve_parameters Q;
+      Q.consistency_cells = cells;
+      thrown = false;
+      try { RI::solve_scene<IT, CGAL::Gmpq>(l.input, l.c, l.t, l.wf, Q); } catch (const RI::Input_error& e) {
+        thrown = std::string(e.what()).find("solve_scene: consistency_cells") != std::string::npos;
+      }
+      CHECK(thrown, "solve_scene, consistency_cells = " << cells << ": no Input_error");
     }
+  }
+  // the bounds of arc consistency: an equation over the leaf cap is left out (a cap of 0 leaves
+  // every equation out, so every cell is kept), a stop keeps every cell, and a solve whose time
+  // limit falls in it is incomplete and says so
+  {
+    Loaded l = load(dir + "/chain7.json");
+    RI::Tree_system<Traits> S(l.c, l.t, l.wf);
+    CGAL::Protect_FPU_rounding<true> guard;
+    const RI::internal::Tree_domains capped = RI::internal::tree_domains(S, 64, {}, 0);
+    const RI::internal::Tree_domains usual = RI::internal::tree_domains(S, 64, {});
+    const RI::internal::Tree_domains stopped = RI::internal::tree_domains(S, 64, [] { return true; });
+    double least_capped = 1, least_usual = 1;
+    for (std::size_t v = 0; v < S.number_of_variables(); ++v) {
+      least_capped = (std::min)(least_capped, capped.fraction(v));
+      least_usual = (std::min)(least_usual, usual.fraction(v));
+    }
+    CHECK(capped.cells == 64 && least_capped == 1 && least_usual < 1 && stopped.cells == 0,
+          "chain7.json: leaf cap 0 keeps " << least_capped << " of a circle at least (1 expected), the usual cap " << least_usual
+                                           << ", a stop gives " << stopped.cells << " cells (0: none)");
+    RI::Scene_solve_parameters Q;
+    Q.consistency_cells = 65536;
+    Q.maximal_seconds = 1e-3;
+    const RI::Scene_solve_result r = RI::solve_scene<IT, CGAL::Gmpq>(l.input, l.c, l.t, l.wf, Q);
+    bool said = false;
+    for (const auto& m : r.limits) said = said || m.find("time limit") != std::string::npos;
+    CHECK(!r.complete() && said && r.statistics.consistent_fraction.empty(),
+          "chain7.json, a time limit of 1 ms with 65536 cells: complete " << r.complete() << ", limit said " << said << ", "
+                                                                          << r.statistics.consistent_fraction.size() << " fractions kept");
   }
   check_propagation("two_pairs_of_hinges.json", load(dir + "/two_pairs_of_hinges.json"), 7);
   check_propagation("chain4.json", load(dir + "/chain4.json"), 2);

@@ -181,6 +181,7 @@ public:
     std::vector<IT> P;                ///< scratch: the first point's position
     std::vector<IT> Q;                ///< scratch: the second point's position
     std::vector<IT> Y;                ///< scratch: a position one edge up
+    std::vector<std::size_t> active;  ///< scratch: the coefficients not zero along a path
   };
 
   /*!
@@ -284,15 +285,16 @@ private:
     X.v = y;
     for (auto& d : X.d) d.assign(m, IT(0));
     std::array<IT, 9> R, dR;
+    std::vector<std::size_t> act;  // (the derivatives not zero, in increasing order: as position())
     for (std::size_t k : path) {
       const Edge_maps& E = maps_[k];
       if (charts[k] == WHOLE) throw Input_error("tree system: a derivative in a hinge without chart (internal error)");
       const Map& M = E.chart[charts[k]];
       double t0, rad;
       centre_radius(x[k], t0, rad);
-      const IT T0(t0), D = horner(M.D, x[k]), D0 = horner(M.D, T0);
+      const IT T0(t0), D = horner(M.D, x[k]), D0 = horner(M.D, T0), D2 = CGAL::square(D);  // (D^2 once for the nine entries)
       for (int i = 0; i < 9; ++i) {
-        dR[std::size_t(i)] = slope(M, i, x[k]);
+        dR[std::size_t(i)] = horner(M.N[std::size_t(i)], x[k]) / D2;
         // the narrower of M / D and the mean-value form M(t0) / D(t0) + dR [-r, r]
         const IT r1 = horner(M.M[std::size_t(i)], x[k]) / D;
         const IT r2 = horner(M.M[std::size_t(i)], T0) / D0 + dR[std::size_t(i)] * IT(-rad, rad);
@@ -308,7 +310,7 @@ private:
         for (int l = 0; l < 3; ++l) v += R[std::size_t(3 * i + l)] * Z[std::size_t(l)];
         Y.v[std::size_t(i)] = v;
         Y.d[std::size_t(i)].assign(m, IT(0));
-        for (std::size_t h = 0; h < m; ++h) {
+        for (std::size_t h : act) {
           IT s(0);
           for (int l = 0; l < 3; ++l) s += R[std::size_t(3 * i + l)] * X.d[std::size_t(l)][h];
           Y.d[std::size_t(i)][h] = s;
@@ -317,6 +319,7 @@ private:
         for (int l = 0; l < 3; ++l) s += dR[std::size_t(3 * i + l)] * Z[std::size_t(l)];
         Y.d[std::size_t(i)][j] += s;
       }
+      if (!std::binary_search(act.begin(), act.end(), j)) act.insert(std::upper_bound(act.begin(), act.end(), j), j);
       X = std::move(Y);
     }
     return X;
@@ -349,7 +352,6 @@ private:
     const double h2 = (std::max)(CGAL::square(IT(h.inf())).sup(), CGAL::square(IT(h.sup())).sup());
     return a[0] + t0 * (a[1] + t0 * a[2]) + (a[1] + 2 * a[2] * t0) * h + a[2] * IT(0, h2);
   }
-  static IT slope(const Map& M, int i, const IT& t) { return horner(M.N[std::size_t(i)], t) / CGAL::square(horner(M.D, t)); }
   // an entry of M(t) / D(t), a rotation: also in [-1, 1]
   static IT rotation_entry(const Map& m, int i, const IT& t)
   {
@@ -368,6 +370,11 @@ private:
     out.assign(3 * s, IT(0));
     for (std::size_t i = 0; i < 3; ++i) out[i * s] = y[i];
     if (w.rotations.size() != maps_.size()) w.rotations.assign(maps_.size(), typename Workspace::Rotation());
+    // the coefficients not zero: those of the path's edges taken so far, in increasing order
+    // (the others stay exactly 0, so skipping them changes no bit of the result: a long path
+    // costs its length squared, not its length times the equation's variables)
+    std::vector<std::size_t>& act = w.active;
+    act.clear();
     for (std::size_t k : path) {
       const Edge_maps& E = maps_[k];
       const int ch = charts[k];
@@ -384,9 +391,9 @@ private:
           double t0, rad;
           centre_radius(x[k], t0, rad);
           const IT T0(t0), r(rad);
-          const IT D0 = horner(M.D, T0), D = horner(M.D, x[k]);
+          const IT D0 = horner(M.D, T0), D = horner(M.D, x[k]), D2 = CGAL::square(D);  // (D^2 once for the nine entries)
           for (int i = 0; i < 9; ++i) {
-            IT c = horner(M.M[std::size_t(i)], T0) / D0, a = slope(M, i, x[k]) * r;
+            IT c = horner(M.M[std::size_t(i)], T0) / D0, a = horner(M.N[std::size_t(i)], x[k]) / D2 * r;
             // the entry lies in [-1, 1]: where the form says more, a constant may be narrower
             const double sp = CGAL::abs(a).sup();
             if ((c - IT(sp)).inf() < -1 || (c + IT(sp)).sup() > 1) {
@@ -406,7 +413,7 @@ private:
       for (std::size_t l = 0; l < 3; ++l) {
         zc[l] = out[l * s] - E.s[l];
         IT t(0);
-        for (std::size_t h = 0; h < m; ++h) t += CGAL::abs(out[l * s + 1 + h]);
+        for (std::size_t h : act) t += CGAL::abs(out[l * s + 1 + h]);
         zs[l] = t.sup();
       }
       w.Y.assign(3 * s, IT(0));
@@ -418,7 +425,7 @@ private:
           quad = (IT(quad) + CGAL::abs(R.a[3 * i + l]) * IT(zs[l])).sup();
         }
         w.Y[i * s] = c + IT(-quad, quad);
-        for (std::size_t h = 0; h < m; ++h) {
+        for (std::size_t h : act) {
           IT v(0);
           for (std::size_t l = 0; l < 3; ++l) v += R.c[3 * i + l] * out[l * s + 1 + h];
           w.Y[i * s + 1 + h] = v;
@@ -426,6 +433,7 @@ private:
         if (j < m)
           for (std::size_t l = 0; l < 3; ++l) w.Y[i * s + 1 + j] += R.a[3 * i + l] * zc[l];
       }
+      if (j < m && !std::binary_search(act.begin(), act.end(), j)) act.insert(std::upper_bound(act.begin(), act.end(), j), j);
       std::swap(out, w.Y);
     }
   }

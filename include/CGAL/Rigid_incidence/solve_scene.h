@@ -167,7 +167,8 @@ struct Scene_solve_parameters
   std::size_t sweep_from = 64;
   /// the cells per chart of a hinge of the arc consistency that `solve_tree_system()` runs
   /// before the sweep and the chart propagation (`Tree_solver_parameters::consistency_cells`; 0:
-  /// none)
+  /// none; anything but 0 or a power of 2 from 2 to 65536: `solve_scene()` throws an
+  /// `Input_error` before it starts)
   std::size_t consistency_cells = 512;
   /// Called once before the first combination of charts and placements is solved and after each
   /// one (empty: never), one call
@@ -450,6 +451,33 @@ std::vector<int> placement_counts(const Rigid_body_collection<Traits>& c, const 
   return n;
 }
 
+// Whether body b, outside the covering set, has placements the solve enumerates per root (each
+// a configuration of its own): one of its points is on no covering body (else the system's
+// equations fix it whatever its placement), and its equations do not depend on its placement
+// (holds_pair_through_placement(): then it is enumerated with the covering bodies).
+template <class Traits>
+bool own_points_outside(const Rigid_body_collection<Traits>& c, const Incidence_tree& tree, std::size_t b)
+{
+  if (c.body(b).all_coordinates() || holds_pair_through_placement(c, tree, b)) return false;
+  std::vector<bool> covered(c.number_of_points(), false);
+  for (std::size_t k : tree.covering_set) for (std::size_t q : c.body(k).points) covered[q] = true;
+  return std::any_of(c.body(b).points.begin(), c.body(b).points.end(), [&](std::size_t q) { return !covered[q]; });
+}
+
+// Whether solve_scene() solves a tree of hinges by one sweep (Scene_solve_parameters::sweep),
+// said the same way to scene_solve_work(): its Tree_system is square with a sweep order that
+// has a driver, it has at least `sweep_from` chart combinations (2 per hinge, so 2^n: no
+// product that saturates), a single combination of placements, and no body outside the
+// covering set whose placements are enumerated per root (`per_root`).
+template <class Traits>
+bool sweeps(const Tree_system<Traits>& ts, const Sweep_order& o, std::size_t placement_combinations, bool per_root, std::size_t sweep_from)
+{
+  const std::size_t n = ts.number_of_variables();
+  const std::size_t from = (std::max<std::size_t>)(sweep_from, 2);
+  const bool enough = n >= std::size_t(std::numeric_limits<std::size_t>::digits) - 1 || (std::size_t(1) << n) >= from;
+  return ts.is_square() && o.exists(n) && o.driver != Sweep_order::none && enough && placement_combinations == 1 && !per_root;
+}
+
 } // namespace internal
 
 /*!
@@ -552,8 +580,11 @@ Scene_solve_work scene_solve_work(const Rigid_body_collection<Traits>& c, const 
     for (const auto& e : ts->equations()) support.push_back(e.variables);
     for (std::size_t k = 0; k < w.variables; ++k) group.push_back(k);
     const Sweep_order o = ts->is_square() ? sweep_order(*ts) : Sweep_order();
-    if (o.exists(w.variables) && o.driver != Sweep_order::none && w.chart_combinations >= (std::max<std::size_t>)(sweep_from, 2) &&
-        w.placement_combinations == 1 && tree.covering_set.size() == c.number_of_bodies()) {
+    bool per_root = false;
+    for (std::size_t b : tree.non_covering)
+      per_root = per_root || (internal::own_points_outside(c, tree, b) &&
+                              internal::cached_placements<CGAL::Interval_nt<false>>(c, b, maximal_placements)->placements.size() > 1);
+    if (internal::sweeps(*ts, o, w.placement_combinations, per_root, sweep_from)) {
       w.sweep_driver = ts->parametrization(0).variable_names()[o.driver];
       w.sweep_steps = o.steps.size();
       w.sweep_checks = o.checks.size();
@@ -1079,21 +1110,18 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
   // fits them is a configuration of its own (its other points differ), not placement 0 alone
   std::vector<std::size_t> nc_bodies;
   std::vector<int> nc_radix;
-  std::vector<bool> covered(c.number_of_points(), false);
-  for (std::size_t b : tree.covering_set) for (std::size_t q : c.body(b).points) covered[q] = true;
   std::size_t nc_product = 1;
   for (std::size_t b : tree.non_covering) {
     if (c.body(b).all_coordinates()) continue;
-    // a body whose points the covering set all places is fixed by the system's equations:
-    // its placements only differ in points of its own
-    const bool own_points = std::any_of(c.body(b).points.begin(), c.body(b).points.end(), [&](std::size_t q) { return !covered[q]; });
     auto e = internal::cached_placements<CGAL::Interval_nt<false>>(c, b, parameters.maximal_placements);
     if (!e->complete)
       out.limits.push_back("body '" + c.body(b).name + "' (outside the covering set) has more than " + std::to_string(e->placements.size()) +
                            " placements (maximal_placements): only the first " + std::to_string(e->placements.size()) + " were tried");
     if (!e->singular.empty()) singular_body[b] = e->singular;
     // (a body whose equations depend on its placement is enumerated with the covering bodies)
-    if (own_points && e->placements.size() > 1 && !holds_pair_through_placement(c, tree, b)) {
+    // (a body whose points the covering set all places is fixed by the system's equations: its
+    // placements only differ in points of its own)
+    if (e->placements.size() > 1 && internal::own_points_outside(c, tree, b)) {
       nc_bodies.push_back(b);
       nc_radix.push_back(int(e->placements.size()));
       nc_product = nc_product > parameters.maximal_placements ? nc_product : nc_product * e->placements.size();
@@ -1692,8 +1720,11 @@ Scene_solve_result solve_scene_unscaled(const Rigid_body_collection<Traits>& ori
   // A chain of hinges braced by near distances (a sweep order with a driver): solved along the
   // tree by one sweep, never expanded, instead of chart combination by chart combination
   bool swept = false;
-  if (sweep_system && !one_dof && per_placement >= (std::max<std::size_t>)(parameters.sweep_from, 2) && total == per_placement &&
-      nc_bodies.empty() && placements_fit(placements)) {
+  std::size_t placement_combinations = 1;
+  for (int x : radix_p) placement_combinations = x > 1 ? 2 : placement_combinations;  // (1, or more than 1)
+  if (sweep_system && !one_dof &&
+      internal::sweeps(*sweep_system, sweep_order(*sweep_system), placement_combinations, !nc_bodies.empty(), parameters.sweep_from) &&
+      placements_fit(placements)) {
     auto t1 = Clock::now();
     const Tree_system<Traits>* ts = &*sweep_system;
     {
@@ -2566,6 +2597,8 @@ Scene_solve_result solve_scene(const Rigid_body_collection<Traits>& original, co
   // the interrupt and the time limit also cut the wait for the exact decisions of a body
   // (run in a child process, see enumerate_placements())
   internal::Wait_stop_scope stop(parameters.interrupt, parameters.maximal_seconds);
+  // (refused before any work, not when a sweep or the chart propagation first needs it)
+  internal::check_consistency_cells(parameters.consistency_cells, "solve_scene");
   const long k = internal::size_exponent(c);
   if (k >= -20 && k <= 20) return internal::solve_scene_with_precision<IT, NT>(original, c, tree, selection, parameters);
   Scene_solve_result r = internal::solve_scene_with_precision<IT, NT>(internal::scaled_collection(original, -k),

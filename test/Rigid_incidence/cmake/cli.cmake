@@ -417,6 +417,14 @@ if(TARGET rigid_incidence)
                    "-DEXPECT_STDOUT=32768 chart combinations x 1 placement combination&&solved along the tree by one sweep driven by"
                    -P ${_ri_cli_script})
   set_tests_properties(cli_analyze_chain16_sweep PROPERTIES TIMEOUT 60)
+  # a chain of 64 tetrahedra (2^64 chart combinations: a count that once saturated to 0, so the
+  # solve expanded the reduced system and hung past its time limit and SIGTERM): swept, and cut
+  # by the time limit with the rest pending (the incidence tree's search takes about 10 s)
+  add_test(NAME cli_solve_chain64_sweeps
+           COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${CMAKE_CURRENT_LIST_DIR}/../data/chain64.json|--max-seconds|1|--json|--quiet"
+                   -DEXPECT_RC=0 "-DEXPECT_STDOUT=\"complete\": false&&\"swept\": true&&time limit of 1 s"
+                   -P ${_ri_cli_script})
+  set_tests_properties(cli_solve_chain64_sweeps PROPERTIES TIMEOUT 90)
   add_test(NAME cli_solve_chain7_consistency_text
            COMMAND ${CMAKE_COMMAND} "-DTOOL=${_ri_tool}" "-DARGS=solve|${CMAKE_CURRENT_LIST_DIR}/../data/chain7.json" -DEXPECT_RC=0
                    "-DEXPECT_STDOUT=solved along the tree by a sweep \\(no chart combination built\\), arc consistency kept [0-9.e-]+ to [0-9.e-]+ % of each hinge's circle"
